@@ -1,0 +1,526 @@
+/* ----------------------------------------------------------------------
+   Cluster-dynamics plugin for LAMMPS: pair styles morse/spline, lj/spline,
+   mie/spline, harmonic/spline.  See pair_spline.h and doc/pair_spline.rst.
+------------------------------------------------------------------------- */
+
+#include "pair_spline.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "error.h"
+#include "force.h"
+#include "memory.h"
+#include "neigh_list.h"
+#include "neighbor.h"
+
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+using namespace ClusterDyn;
+
+template <class Law> PairSpline<Law>::PairSpline(LAMMPS *lmp) : Pair(lmp)
+{
+  writedata = 1;
+  born_matrix_enable = 1;
+  tail = CUT;
+  rc_global = rs_global = 0.0;
+  d0 = a0 = p0 = q0 = kappa = rc_pair = rs_pair = cut = nullptr;
+  coeffs = nullptr;
+  kappa_any = 0;
+}
+
+template <class Law> PairSpline<Law>::~PairSpline()
+{
+  if (copymode) return;
+  if (allocated) {
+    memory->destroy(setflag);
+    memory->destroy(cutsq);
+    memory->destroy(cut);
+    memory->destroy(d0);
+    memory->destroy(a0);
+    memory->destroy(p0);
+    memory->destroy(q0);
+    memory->destroy(kappa);
+    memory->destroy(rc_pair);
+    memory->destroy(rs_pair);
+    delete[] coeffs;
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+template <class Law> void PairSpline<Law>::compute(int eflag, int vflag)
+{
+  ev_init(eflag, vflag);
+  dispatch(eflag, [&](auto t, auto k, auto ev, auto e, auto n) {
+    eval<decltype(t)::value, decltype(k)::value, decltype(ev)::value, decltype(e)::value,
+         decltype(n)::value>();
+  });
+  if (vflag_fdotr) virial_fdotr_compute();
+}
+
+template <class Law>
+template <int TAIL, bool KAPPA, int EVFLAG, int EFLAG, int NEWTON_PAIR>
+void PairSpline<Law>::eval()
+{
+  const auto *_noalias const x = (xyz3 *) atom->x[0];
+  auto *_noalias const f = (xyz3 *) atom->f[0];
+  const int *_noalias const type = atom->type;
+  const int nlocal = atom->nlocal;
+  const double *_noalias const special_lj = force->special_lj;
+  const int ntp1 = atom->ntypes + 1;
+  const int inum = list->inum;
+  const int *_noalias const ilist = list->ilist;
+  const int *_noalias const numneigh = list->numneigh;
+  int **firstneigh = list->firstneigh;
+  double evdwl = 0.0;
+
+  for (int ii = 0; ii < inum; ii++) {
+    const int i = ilist[ii];
+    const double xtmp = x[i].x, ytmp = x[i].y, ztmp = x[i].z;
+    const SplineCoeff *_noalias const ci = coeffs + type[i] * ntp1;
+    const int *_noalias const jlist = firstneigh[i];
+    const int jnum = numneigh[i];
+    double fxtmp = 0.0, fytmp = 0.0, fztmp = 0.0;
+
+    for (int jj = 0; jj < jnum; jj++) {
+      int j = jlist[jj];
+      const double factor_lj = special_lj[sbmask(j)];
+      j &= NEIGHMASK;
+      const double delx = xtmp - x[j].x;
+      const double dely = ytmp - x[j].y;
+      const double delz = ztmp - x[j].z;
+      const double rsq = delx * delx + dely * dely + delz * delz;
+      const SplineCoeff &c = ci[type[j]];
+      if (rsq < c.cutsq) {
+        if (rsq <= c.hardsq) singular_error(i, j, rsq);
+        double fpair;
+        const double e = tail_eval<TAIL, KAPPA, Law>(c, rsq, fpair);
+        fpair *= factor_lj;
+        fxtmp += delx * fpair;
+        fytmp += dely * fpair;
+        fztmp += delz * fpair;
+        if (NEWTON_PAIR || j < nlocal) {
+          f[j].x -= delx * fpair;
+          f[j].y -= dely * fpair;
+          f[j].z -= delz * fpair;
+        }
+        if (EFLAG) evdwl = factor_lj * (e - c.offset);
+        if (EVFLAG) ev_tally(i, j, nlocal, NEWTON_PAIR, evdwl, 0.0, fpair, delx, dely, delz);
+      }
+    }
+    f[i].x += fxtmp;
+    f[i].y += fytmp;
+    f[i].z += fztmp;
+  }
+}
+
+template <class Law> void PairSpline<Law>::singular_error(int i, int j, double rsq) const
+{
+  const SplineCoeff &c = pair_coeff(atom->type[i], atom->type[j]);
+  error->one(FLERR,
+             "Pair {}: atoms {} and {} are {:.8g} apart, at or inside the distance {:.8g} where "
+             "their law (types {} {}) is singular (a (1 - 1/kappa) for kappa > 1, else 0): "
+             "reduce the time step or kappa",
+             Law::style, atom->tag[i], atom->tag[j], sqrt(rsq), sqrt(c.hardsq), atom->type[i],
+             atom->type[j]);
+  std::abort();    // not reached: error->one() throws
+}
+
+/* ---------------------------------------------------------------------- */
+
+template <class Law> void PairSpline<Law>::allocate()
+{
+  allocated = 1;
+  const int np1 = atom->ntypes + 1;
+  memory->create(setflag, np1, np1, "pair:setflag");
+  for (int i = 1; i < np1; i++)
+    for (int j = i; j < np1; j++) setflag[i][j] = 0;
+  memory->create(cutsq, np1, np1, "pair:cutsq");
+  memory->create(cut, np1, np1, "pair:cut");
+  memory->create(d0, np1, np1, "pair:d0");
+  memory->create(a0, np1, np1, "pair:a0");
+  memory->create(p0, np1, np1, "pair:p0");
+  memory->create(q0, np1, np1, "pair:q0");
+  memory->create(kappa, np1, np1, "pair:kappa");
+  memory->create(rc_pair, np1, np1, "pair:rc_pair");
+  memory->create(rs_pair, np1, np1, "pair:rs_pair");
+  coeffs = new SplineCoeff[np1 * np1]();
+}
+
+/* ----------------------------------------------------------------------
+   pair_style STYLE cut Rc | wagner | lagunov Rc [start Rs]
+------------------------------------------------------------------------- */
+
+template <class Law> void PairSpline<Law>::settings(int narg, char **arg)
+{
+  if (narg < 1)
+    error->all(FLERR, "Pair style {}: missing tail (cut Rc | wagner | lagunov Rc [start Rs])",
+               Law::style);
+  const std::string name = arg[0];
+  rs_global = 0.0;
+  if (name == "cut") {
+    if (narg != 2) error->all(FLERR, "Pair style {} cut: expected one argument Rc", Law::style);
+    tail = CUT;
+    rc_global = utils::numeric(FLERR, arg[1], false, lmp);
+    if (!(rc_global > 1.0))
+      error->all(FLERR, "Pair style {} cut: Rc must be > 1 in units of a (got {}): the bond would "
+                 "never hold", Law::style, arg[1]);
+  } else if (name == "wagner") {
+    if (narg != 1) error->all(FLERR, "Pair style {} wagner: takes no arguments", Law::style);
+    if (!Law::has_inflection)
+      error->all(FLERR, "Pair style {}: tail wagner needs an inflection point; the harmonic well "
+                 "has none (use cut or lagunov Rc start Rs)", Law::style);
+    tail = WAGNER;
+    rc_global = 0.0;
+  } else if (name == "lagunov") {
+    if (narg != 2 && narg != 4)
+      error->all(FLERR, "Pair style {} lagunov: expected Rc [start Rs]", Law::style);
+    tail = LAGUNOV;
+    rc_global = positive_arg(Law::style, "lagunov Rc", arg[1], lmp);
+    if (narg == 4) {
+      if (strcmp(arg[2], "start") != 0)
+        error->all(FLERR, "Pair style {} lagunov: unknown keyword '{}' (expected start)",
+                   Law::style, arg[2]);
+      rs_global = positive_arg(Law::style, "lagunov start Rs", arg[3], lmp);
+      if (!(rc_global > rs_global))
+        error->all(FLERR, "Pair style {} lagunov: Rc = {} must be > start Rs = {}", Law::style,
+                   arg[1], arg[3]);
+    } else if (!Law::has_inflection)
+      error->all(FLERR, "Pair style {}: tail lagunov needs 'start Rs'; the harmonic well has no "
+                 "inflection point to start at", Law::style);
+  } else
+    error->all(FLERR, "Pair style {}: unknown tail '{}' (expected cut, wagner or lagunov)",
+               Law::style, name);
+}
+
+/* ----------------------------------------------------------------------
+   pair_coeff I J <law args> [kappa K] [rc Rc] [rs Rs]
+------------------------------------------------------------------------- */
+
+template <class Law> void PairSpline<Law>::coeff(int narg, char **arg)
+{
+  if (narg < 2 + Law::nargs)
+    error->all(FLERR, "Pair {}: expected pair_coeff I J {} [kappa K] [rc Rc] [rs Rs]", Law::style,
+               Law::usage);
+  if (!allocated) allocate();
+
+  int ilo, ihi, jlo, jhi;
+  utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
+  utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
+
+  SplineCoeff in{};
+  Law::read(arg + 2, in, lmp);
+  double kappa_one = 1.0, rc_one = 0.0, rs_one = 0.0;
+  for (int iarg = 2 + Law::nargs; iarg < narg; iarg += 2) {
+    const std::string key = arg[iarg];
+    if (key != "kappa" && key != "rc" && key != "rs")
+      error->all(FLERR, "Pair {}: unknown pair_coeff keyword '{}' (expected kappa, rc or rs)",
+                 Law::style, key);
+    if (iarg + 1 >= narg) error->all(FLERR, "Pair {}: pair_coeff keyword {} needs a value",
+                                     Law::style, key);
+    const double value = positive_arg(Law::style, key.c_str(), arg[iarg + 1], lmp);
+    if (key == "kappa") kappa_one = value;
+    else if (key == "rc") {
+      if (tail == WAGNER)
+        error->all(FLERR, "Pair {}: keyword rc does not apply to tail wagner (its cutoff follows "
+                   "from the law)", Law::style);
+      if (tail == CUT && !(value > 1.0))
+        error->all(FLERR, "Pair {}: rc must be > 1 in units of a (got {})", Law::style,
+                   arg[iarg + 1]);
+      rc_one = value;
+    } else {
+      if (tail != LAGUNOV)
+        error->all(FLERR, "Pair {}: keyword rs applies only to tail lagunov", Law::style);
+      rs_one = value;
+    }
+  }
+
+  int count = 0;
+  for (int i = ilo; i <= ihi; i++) {
+    for (int j = MAX(jlo, i); j <= jhi; j++) {
+      d0[i][j] = in.d;
+      a0[i][j] = in.a;
+      p0[i][j] = in.p;
+      q0[i][j] = in.q;
+      kappa[i][j] = kappa_one;
+      rc_pair[i][j] = rc_one;
+      rs_pair[i][j] = rs_one;
+      setflag[i][j] = 1;
+      derive(i, j);    // reject a bad law now, with the pair named
+      count++;
+    }
+  }
+  if (count == 0) error->all(FLERR, "Incorrect args for pair coefficients");
+}
+
+/* ----------------------------------------------------------------------
+   kernel data of one type pair from its input and the tail settings
+------------------------------------------------------------------------- */
+
+template <class Law> void PairSpline<Law>::derive(int i, int j)
+{
+  const int np1 = atom->ntypes + 1;
+  SplineCoeff &c = coeffs[i * np1 + j];
+  c = SplineCoeff();
+  c.d = d0[i][j];
+  c.a = a0[i][j];
+  c.p = p0[i][j];
+  c.q = q0[i][j];
+  c.kappa = kappa[i][j];
+  Law::setup(c);
+
+  // inflection point b and bond strength f* of the kappa-modified base
+
+  double b = 0.0, pib = 0.0, fstar = 0.0;
+  if (Law::has_inflection) {
+    const double b0 = Law::inflection(c);
+    double d[4];
+    Law::derivs(c, b0, d);
+    b = c.a + (b0 - c.a) / c.kappa;
+    pib = d[0];
+    fstar = c.kappa * fabs(d[1]);
+  }
+  const double rc_rel = rc_pair[i][j] > 0.0 ? rc_pair[i][j] : rc_global;
+
+  if (tail == CUT) {
+    c.rc = rc_rel * c.a;
+  } else if (tail == WAGNER) {
+    const double disc = 16.0 + 24.0 * pib / (b * fstar);
+    if (disc < 0.0)
+      error->all(FLERR, "Pair {}: tail wagner has no cutoff for types {} {}: 16 + 24 Pi(b)/(b f*) "
+                 "= {:.6g} < 0 (the well is too wide; Morse needs alpha a >= 1.557)", Law::style,
+                 i, j, disc);
+    const double b2 = b * b;
+    c.bsq = b2;
+    c.acsq = b2 * (5.0 - sqrt(disc));
+    c.wa2 = (5.0 * b2 - c.acsq) * fstar / (8.0 * b2 * b * (c.acsq - b2));
+    c.wa3 = (3.0 * b2 - c.acsq) * fstar / (12.0 * b2 * b * (c.acsq - b2) * (c.acsq - b2));
+    c.rc = sqrt(c.acsq);
+  } else {
+    const double rs_rel = rs_pair[i][j] > 0.0 ? rs_pair[i][j] : rs_global;
+    c.rs = rs_rel > 0.0 ? rs_rel * c.a : b;
+    if (!(c.rs > 0.0))
+      error->all(FLERR, "Pair {}: tail lagunov needs a start Rs for types {} {} (pair_style "
+                 "... start Rs or pair_coeff ... rs Rs): the law has no inflection point",
+                 Law::style, i, j);
+    c.rc = rc_rel * c.a;
+    if (!(c.rc > c.rs))
+      error->all(FLERR, "Pair {}: lagunov Rc = {} a must be > its start Rs = {:.6g} a for types "
+                 "{} {}", Law::style, rc_rel, c.rs / c.a, i, j);
+    c.rssq = c.rs * c.rs;
+    c.inv_l2 = 1.0 / ((c.rc - c.rs) * (c.rc - c.rs));
+  }
+  c.cutsq = c.rc * c.rc;
+
+  if (tail == CUT && offset_flag) {
+    double d[4];
+    Law::derivs(c, c.kappa * (c.rc - c.a) + c.a, d);
+    c.offset = d[0];
+  }
+  if (Law::singular && c.kappa > 1.0) {
+    const double rh = c.a * (1.0 - 1.0 / c.kappa);
+    c.hardsq = rh * rh;
+  }
+  coeffs[j * np1 + i] = c;
+}
+
+/* ---------------------------------------------------------------------- */
+
+template <class Law> void PairSpline<Law>::init_style()
+{
+  neighbor->add_request(this);
+  kappa_any = 0;
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++)
+      if (setflag[i][j] && kappa[i][j] != 1.0) kappa_any = 1;
+}
+
+template <class Law> double PairSpline<Law>::init_one(int i, int j)
+{
+  if (setflag[i][j] == 0)
+    error->all(FLERR, "Pair {}: coefficients for atom types {} {} are not set (this style does "
+               "not mix: give pair_coeff {} {} ...)", Law::style, i, j, i, j);
+  derive(i, j);
+  for (auto *v : {d0, a0, p0, q0, kappa, rc_pair, rs_pair}) v[j][i] = v[i][j];
+  cut[i][j] = cut[j][i] = pair_coeff(i, j).rc;
+  return cut[i][j];
+}
+
+/* ---------------------------------------------------------------------- */
+
+template <class Law> void PairSpline<Law>::write_restart(FILE *fp)
+{
+  write_restart_settings(fp);
+  for (int i = 1; i <= atom->ntypes; i++) {
+    for (int j = i; j <= atom->ntypes; j++) {
+      fwrite(&setflag[i][j], sizeof(int), 1, fp);
+      if (setflag[i][j])
+        for (auto *v : {d0, a0, p0, q0, kappa, rc_pair, rs_pair})
+          fwrite(&v[i][j], sizeof(double), 1, fp);
+    }
+  }
+}
+
+template <class Law> void PairSpline<Law>::read_restart(FILE *fp)
+{
+  read_restart_settings(fp);
+  allocate();
+  const int me = comm->me;
+  for (int i = 1; i <= atom->ntypes; i++) {
+    for (int j = i; j <= atom->ntypes; j++) {
+      if (me == 0) utils::sfread(FLERR, &setflag[i][j], sizeof(int), 1, fp, nullptr, error);
+      MPI_Bcast(&setflag[i][j], 1, MPI_INT, 0, world);
+      if (setflag[i][j]) {
+        for (auto *v : {d0, a0, p0, q0, kappa, rc_pair, rs_pair}) {
+          if (me == 0) utils::sfread(FLERR, &v[i][j], sizeof(double), 1, fp, nullptr, error);
+          MPI_Bcast(&v[i][j], 1, MPI_DOUBLE, 0, world);
+        }
+      }
+    }
+  }
+}
+
+template <class Law> void PairSpline<Law>::write_restart_settings(FILE *fp)
+{
+  fwrite(&tail, sizeof(int), 1, fp);
+  fwrite(&rc_global, sizeof(double), 1, fp);
+  fwrite(&rs_global, sizeof(double), 1, fp);
+  fwrite(&offset_flag, sizeof(int), 1, fp);
+  fwrite(&mix_flag, sizeof(int), 1, fp);
+}
+
+template <class Law> void PairSpline<Law>::read_restart_settings(FILE *fp)
+{
+  if (comm->me == 0) {
+    utils::sfread(FLERR, &tail, sizeof(int), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &rc_global, sizeof(double), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &rs_global, sizeof(double), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &offset_flag, sizeof(int), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &mix_flag, sizeof(int), 1, fp, nullptr, error);
+  }
+  MPI_Bcast(&tail, 1, MPI_INT, 0, world);
+  MPI_Bcast(&rc_global, 1, MPI_DOUBLE, 0, world);
+  MPI_Bcast(&rs_global, 1, MPI_DOUBLE, 0, world);
+  MPI_Bcast(&offset_flag, 1, MPI_INT, 0, world);
+  MPI_Bcast(&mix_flag, 1, MPI_INT, 0, world);
+}
+
+/* ----------------------------------------------------------------------
+   data files: the law's arguments, then every keyword explicitly
+------------------------------------------------------------------------- */
+
+template <class Law> std::string PairSpline<Law>::data_args(int i, int j) const
+{
+  SplineCoeff c{};
+  c.d = d0[i][j];
+  c.a = a0[i][j];
+  c.p = p0[i][j];
+  c.q = q0[i][j];
+  std::string text = Law::args(c) + fmt::format(" kappa {}", kappa[i][j]);
+  if (rc_pair[i][j] > 0.0) text += fmt::format(" rc {}", rc_pair[i][j]);
+  if (rs_pair[i][j] > 0.0) text += fmt::format(" rs {}", rs_pair[i][j]);
+  return text;
+}
+
+template <class Law> void PairSpline<Law>::write_data(FILE *fp)
+{
+  for (int i = 1; i <= atom->ntypes; i++) utils::print(fp, "{} {}\n", i, data_args(i, i));
+}
+
+template <class Law> void PairSpline<Law>::write_data_all(FILE *fp)
+{
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++) utils::print(fp, "{} {} {}\n", i, j, data_args(i, j));
+}
+
+/* ----------------------------------------------------------------------
+   the full law (kappa, tail, shift) and its first two derivatives at r
+------------------------------------------------------------------------- */
+
+template <class Law>
+double PairSpline<Law>::law(int itype, int jtype, double r, double &d1, double &d2) const
+{
+  const SplineCoeff &c = pair_coeff(itype, jtype);
+  d1 = d2 = 0.0;
+  if (r >= c.rc) return 0.0;
+  if (tail == WAGNER && r * r >= c.bsq) {
+    const double w = c.acsq - r * r;
+    const double g = w * (3.0 * c.wa3 * w - 2.0 * c.wa2);    // dPi/dw
+    d1 = -2.0 * r * g;
+    d2 = -2.0 * g + 4.0 * r * r * (6.0 * c.wa3 * w - 2.0 * c.wa2);
+    return w * w * (c.wa3 * w - c.wa2);
+  }
+  double d[4];
+  Law::derivs(c, c.kappa * (r - c.a) + c.a, d);
+  double pi = d[0];
+  d1 = c.kappa * d[1];
+  d2 = c.kappa * c.kappa * d[2];
+  if (tail == LAGUNOV && r >= c.rs) {
+    const double x = r - c.rs;
+    const double m = 1.0 - x * x * c.inv_l2;
+    const double k0 = m * m;
+    const double k1 = -4.0 * x * m * c.inv_l2;
+    const double k2 = -4.0 * c.inv_l2 * (m - 2.0 * x * x * c.inv_l2);
+    d2 = d2 * k0 + 2.0 * d1 * k1 + pi * k2;
+    d1 = d1 * k0 + pi * k1;
+    pi *= k0;
+  }
+  return pi - c.offset;
+}
+
+template <class Law>
+double PairSpline<Law>::single(int, int, int itype, int jtype, double rsq, double,
+                               double factor_lj, double &fforce)
+{
+  const SplineCoeff &c = pair_coeff(itype, jtype);
+  double fpair = 0.0, e = 0.0;
+  if (rsq < c.cutsq) {
+    if (tail == CUT) e = tail_eval<CUT, true, Law>(c, rsq, fpair);
+    else if (tail == WAGNER) e = tail_eval<WAGNER, true, Law>(c, rsq, fpair);
+    else e = tail_eval<LAGUNOV, true, Law>(c, rsq, fpair);
+    e -= c.offset;
+  }
+  fforce = factor_lj * fpair;
+  return factor_lj * e;
+}
+
+template <class Law>
+void PairSpline<Law>::born_matrix(int, int, int itype, int jtype, double rsq, double,
+                                  double factor_lj, double &dupair, double &du2pair)
+{
+  law(itype, jtype, sqrt(rsq), dupair, du2pair);
+  dupair *= factor_lj;
+  du2pair *= factor_lj;
+}
+
+/* ---------------------------------------------------------------------- */
+
+template <class Law> void *PairSpline<Law>::extract(const char *str, int &dim)
+{
+  dim = 2;
+  if (strcmp(str, "D") == 0) return (void *) d0;
+  if (strcmp(str, "a") == 0) return (void *) a0;
+  if (strcmp(str, "kappa") == 0) return (void *) kappa;
+  if constexpr (Law::p_name != nullptr)
+    if (strcmp(str, Law::p_name) == 0) return (void *) p0;
+  if constexpr (Law::q_name != nullptr)
+    if (strcmp(str, Law::q_name) == 0) return (void *) q0;
+  return nullptr;
+}
+
+template <class Law> double PairSpline<Law>::memory_usage()
+{
+  const double np1 = atom->ntypes + 1;
+  return np1 * np1 * (2.0 * sizeof(int) + 9.0 * sizeof(double) + sizeof(SplineCoeff));
+}
+
+namespace LAMMPS_NS {
+namespace ClusterDyn {
+  template class PairSpline<MorseLaw>;
+  template class PairSpline<LJLaw>;
+  template class PairSpline<MieLaw>;
+  template class PairSpline<HarmonicLaw>;
+}    // namespace ClusterDyn
+}    // namespace LAMMPS_NS

@@ -1,0 +1,144 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   Cluster-dynamics plugin for LAMMPS: pair styles morse/spline, lj/spline,
+   mie/spline, harmonic/spline (doc/pair_spline.rst).
+
+   PairSpline<Law> holds what every law shares: the tail (cut, wagner,
+   lagunov), the kappa modification, coefficients, restart, data files,
+   single(), born_matrix() and extract().  The force loop is compiled per
+   tail and for kappa == 1, so a scene pays only for what it uses.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_CLUSTERDYN_PAIR_SPLINE_H
+#define LMP_CLUSTERDYN_PAIR_SPLINE_H
+
+#include "atom.h"
+#include "force.h"
+#include "pair.h"
+#include "spline_laws.h"
+
+#include <type_traits>
+
+namespace LAMMPS_NS {
+namespace ClusterDyn {
+
+  enum Tail { CUT = 0, WAGNER = 1, LAGUNOV = 2 };
+
+  // view of the x and f arrays as packed triplets (as OPT and OPENMP do)
+  struct xyz3 {
+    double x, y, z;
+  };
+
+  // energy and fpair of a pair inside the cutoff (rsq < c.cutsq), unshifted
+
+  template <int TAIL, bool KAPPA, class Law>
+  inline double tail_eval(const SplineCoeff &c, double rsq, double &fpair)
+  {
+    if (TAIL == WAGNER && rsq >= c.bsq) {
+      const double w = c.acsq - rsq;
+      fpair = 2.0 * w * (3.0 * c.wa3 * w - 2.0 * c.wa2);
+      return w * w * (c.wa3 * w - c.wa2);
+    }
+    if (TAIL == LAGUNOV && rsq >= c.rssq) {
+      const double r = sqrt(rsq);
+      double fbase;
+      const double e = Law::template eval<KAPPA>(c, rsq, fbase);
+      const double x = r - c.rs;
+      const double m = 1.0 - x * x * c.inv_l2;
+      fpair = m * (fbase * m + 4.0 * x * c.inv_l2 * e / r);
+      return e * m * m;
+    }
+    return Law::template eval<KAPPA>(c, rsq, fpair);
+  }
+
+  template <class Law> class PairSpline : public Pair {
+   public:
+    PairSpline(class LAMMPS *);
+    ~PairSpline() override;
+
+    void compute(int, int) override;
+    void settings(int, char **) override;
+    void coeff(int, char **) override;
+    void init_style() override;
+    double init_one(int, int) override;
+    void write_restart(FILE *) override;
+    void read_restart(FILE *) override;
+    void write_restart_settings(FILE *) override;
+    void read_restart_settings(FILE *) override;
+    void write_data(FILE *) override;
+    void write_data_all(FILE *) override;
+    double single(int, int, int, int, double, double, double, double &) override;
+    void born_matrix(int, int, int, int, double, double, double, double &, double &) override;
+    void *extract(const char *, int &) override;
+    double memory_usage() override;
+
+    // Pi(r), Pi'(r), Pi''(r) of the full law (kappa and tail) for one type pair
+    double law(int itype, int jtype, double r, double &d1, double &d2) const;
+
+   protected:
+    int tail;                   // Tail
+    double rc_global;           // tail end in units of a (cut, lagunov)
+    double rs_global;           // lagunov start in units of a; 0 = the inflection point b
+
+    // per type pair input, as given (the LAMMPS interface: extract, restart, data)
+    double **d0, **a0, **p0, **q0, **kappa, **rc_pair, **rs_pair;    // rc, rs: 0 = global
+    double **cut;
+
+    SplineCoeff *coeffs;        // (ntypes+1)^2 packed kernel data
+    int kappa_any;              // some pair has kappa != 1: use the general kernel
+
+    void allocate();
+    void derive(int i, int j);    // checks and fills coeffs for i,j; errors name the pair
+    const SplineCoeff &pair_coeff(int itype, int jtype) const
+    {
+      return coeffs[itype * (atom->ntypes + 1) + jtype];
+    }
+    [[noreturn]] void singular_error(int i, int j, double rsq) const;
+    std::string data_args(int i, int j) const;
+
+    // calls run(tail, kappa, evflag, eflag, newton_pair) with compile-time constants
+    template <class Run> void dispatch(int eflag, Run &&run) const;
+
+   private:
+    template <int TAIL, bool KAPPA, int EVFLAG, int EFLAG, int NEWTON_PAIR> void eval();
+  };
+
+  template <class Law>
+  template <class Run>
+  void PairSpline<Law>::dispatch(int eflag, Run &&run) const
+  {
+    auto with_kappa = [&](auto t, auto k) {
+      using I0 = std::integral_constant<int, 0>;
+      using I1 = std::integral_constant<int, 1>;
+      if (evflag) {
+        if (eflag) {
+          if (force->newton_pair) run(t, k, I1(), I1(), I1());
+          else run(t, k, I1(), I1(), I0());
+        } else {
+          if (force->newton_pair) run(t, k, I1(), I0(), I1());
+          else run(t, k, I1(), I0(), I0());
+        }
+      } else {
+        if (force->newton_pair) run(t, k, I0(), I0(), I1());
+        else run(t, k, I0(), I0(), I0());
+      }
+    };
+    auto with_tail = [&](auto t) {
+      if constexpr (Law::kappa_kernel) {
+        if (kappa_any) return with_kappa(t, std::true_type());
+      }
+      with_kappa(t, std::false_type());
+    };
+    if (tail == CUT) with_tail(std::integral_constant<int, CUT>());
+    else if (tail == WAGNER) with_tail(std::integral_constant<int, WAGNER>());
+    else with_tail(std::integral_constant<int, LAGUNOV>());
+  }
+
+  using PairMorseSpline = PairSpline<MorseLaw>;
+  using PairLJSpline = PairSpline<LJLaw>;
+  using PairMieSpline = PairSpline<MieLaw>;
+  using PairHarmonicSpline = PairSpline<HarmonicLaw>;
+
+}    // namespace ClusterDyn
+}    // namespace LAMMPS_NS
+
+#endif

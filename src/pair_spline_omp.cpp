@@ -1,0 +1,121 @@
+/* ----------------------------------------------------------------------
+   Cluster-dynamics plugin for LAMMPS: /omp variants of the spline pair
+   styles, following OPENMP/pair_morse_omp.cpp.
+------------------------------------------------------------------------- */
+
+#include "pair_spline_omp.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "force.h"
+#include "neigh_list.h"
+#include "suffix.h"
+
+#include <cmath>
+
+#include "omp_compat.h"
+
+using namespace LAMMPS_NS;
+using namespace ClusterDyn;
+
+template <class Law>
+PairSplineOMP<Law>::PairSplineOMP(LAMMPS *lmp) : PairSpline<Law>(lmp), ThrOMP(lmp, THR_PAIR)
+{
+  this->suffix_flag |= Suffix::OMP;
+  this->respa_enable = 0;
+}
+
+template <class Law> void PairSplineOMP<Law>::compute(int eflag, int vflag)
+{
+  this->ev_init(eflag, vflag);
+  const int nall = this->atom->nlocal + this->atom->nghost;
+  const int nthreads = this->comm->nthreads;
+  const int inum = this->list->inum;
+
+#if defined(_OPENMP)
+#pragma omp parallel LMP_DEFAULT_NONE LMP_SHARED(eflag, vflag)
+#endif
+  {
+    int ifrom, ito, tid;
+    loop_setup_thr(ifrom, ito, tid, inum, nthreads);
+    ThrData *thr = fix->get_thr(tid);
+    thr->timer(Timer::START);
+    ev_setup_thr(eflag, vflag, nall, this->eatom, this->vatom, nullptr, thr);
+    this->dispatch(eflag, [&](auto t, auto k, auto ev, auto e, auto n) {
+      eval<decltype(t)::value, decltype(k)::value, decltype(ev)::value, decltype(e)::value,
+           decltype(n)::value>(ifrom, ito, thr);
+    });
+    thr->timer(Timer::PAIR);
+    reduce_thr(this, eflag, vflag, thr);
+  }
+}
+
+template <class Law>
+template <int TAIL, bool KAPPA, int EVFLAG, int EFLAG, int NEWTON_PAIR>
+void PairSplineOMP<Law>::eval(int iifrom, int iito, ThrData *const thr)
+{
+  const auto *_noalias const x = (xyz3 *) this->atom->x[0];
+  auto *_noalias const f = (xyz3 *) thr->get_f()[0];
+  const int *_noalias const type = this->atom->type;
+  const int nlocal = this->atom->nlocal;
+  const double *_noalias const special_lj = this->force->special_lj;
+  const int ntp1 = this->atom->ntypes + 1;
+  const int *_noalias const ilist = this->list->ilist;
+  const int *_noalias const numneigh = this->list->numneigh;
+  int **firstneigh = this->list->firstneigh;
+  double evdwl = 0.0;
+
+  for (int ii = iifrom; ii < iito; ++ii) {
+    const int i = ilist[ii];
+    const double xtmp = x[i].x, ytmp = x[i].y, ztmp = x[i].z;
+    const SplineCoeff *_noalias const ci = this->coeffs + type[i] * ntp1;
+    const int *_noalias const jlist = firstneigh[i];
+    const int jnum = numneigh[i];
+    double fxtmp = 0.0, fytmp = 0.0, fztmp = 0.0;
+
+    for (int jj = 0; jj < jnum; jj++) {
+      int j = jlist[jj];
+      const double factor_lj = special_lj[this->sbmask(j)];
+      j &= NEIGHMASK;
+      const double delx = xtmp - x[j].x;
+      const double dely = ytmp - x[j].y;
+      const double delz = ztmp - x[j].z;
+      const double rsq = delx * delx + dely * dely + delz * delz;
+      const SplineCoeff &c = ci[type[j]];
+      if (rsq < c.cutsq) {
+        if (rsq <= c.hardsq) this->singular_error(i, j, rsq);
+        double fpair;
+        const double e = tail_eval<TAIL, KAPPA, Law>(c, rsq, fpair);
+        fpair *= factor_lj;
+        fxtmp += delx * fpair;
+        fytmp += dely * fpair;
+        fztmp += delz * fpair;
+        if (NEWTON_PAIR || j < nlocal) {
+          f[j].x -= delx * fpair;
+          f[j].y -= dely * fpair;
+          f[j].z -= delz * fpair;
+        }
+        if (EFLAG) evdwl = factor_lj * (e - c.offset);
+        if (EVFLAG)
+          ev_tally_thr(this, i, j, nlocal, NEWTON_PAIR, evdwl, 0.0, fpair, delx, dely, delz, thr);
+      }
+    }
+    f[i].x += fxtmp;
+    f[i].y += fytmp;
+    f[i].z += fztmp;
+  }
+}
+
+template <class Law> double PairSplineOMP<Law>::memory_usage()
+{
+  return memory_usage_thr() + PairSpline<Law>::memory_usage();
+}
+
+namespace LAMMPS_NS {
+namespace ClusterDyn {
+  template class PairSplineOMP<MorseLaw>;
+  template class PairSplineOMP<LJLaw>;
+  template class PairSplineOMP<MieLaw>;
+  template class PairSplineOMP<HarmonicLaw>;
+}    // namespace ClusterDyn
+}    // namespace LAMMPS_NS

@@ -1,0 +1,67 @@
+"""Foundation: the plugin loads by path in lmp and in Python, `plugin list` shows every
+style, a missing file fails clearly in our harness, auto-loading works, and a Morse run
+under MPI gives the serial energy."""
+import os
+import re
+
+import pytest
+from conftest import LMP, PAIR_STYLES, PLUGIN, last_thermo, load_plugin, run_lmp, session
+
+MORSE_BLOCK = """
+units lj
+lattice fcc 1.0
+region box block 0 6 0 6 0 6
+create_box 1 box
+create_atoms 1 box
+mass 1 1.0
+displace_atoms all random 0.05 0.05 0.05 4711
+velocity all create 0.1 12345 loop geom
+pair_style {pair_style}
+pair_coeff * * {pair_coeff}
+neighbor 0.3 bin
+fix 1 all nve
+timestep 0.002
+thermo_style custom step pe ke etotal press
+thermo_modify format float %.15g
+run 100
+"""
+
+
+def test_lmp_loads_by_path_and_lists_every_style(tmp_path):
+    out = run_lmp(tmp_path, f"plugin load {PLUGIN}\nplugin list\n")
+    listed = set(re.findall(r"pair style plugin (\S+)", out))
+    assert listed == set(PAIR_STYLES)
+
+
+def test_python_loads_by_path():
+    with session() as lmp:
+        for style in PAIR_STYLES:
+            assert lmp.has_style("pair", style)
+        assert not lmp.has_style("pair", "no/such/style")
+
+
+def test_missing_plugin_fails_clearly_in_harness():
+    with session(plugin=False) as lmp:
+        # LAMMPS itself only logs the failure ...
+        lmp.command("plugin load /nonexistent/clusterdynplugin.so")
+        assert not lmp.has_style("pair", "morse/spline")
+        # ... our harness says what is wrong
+        with pytest.raises(FileNotFoundError, match="/nonexistent/clusterdynplugin.so"):
+            load_plugin(lmp, "/nonexistent/clusterdynplugin.so")
+
+
+def test_autoload_from_lammps_plugin_path(tmp_path):
+    script = MORSE_BLOCK.format(pair_style="morse/spline cut 1.3", pair_coeff="1.0 5.0 1.1")
+    out = run_lmp(tmp_path, script.replace("run 100", "run 0"),
+                  env={"LAMMPS_PLUGIN_PATH": os.path.dirname(PLUGIN)})
+    assert "Loaded 1 plugins from" in out
+
+
+@pytest.mark.parametrize("nprocs", [2, 4])
+def test_stock_morse_mpi_equals_serial(tmp_path, nprocs):
+    script = f"plugin load {PLUGIN}\n" + MORSE_BLOCK.format(
+        pair_style="morse 1.8", pair_coeff="1.0 5.0 1.1")
+    serial = last_thermo(run_lmp(tmp_path, script), ["PotEng", "TotEng", "Press"])
+    parallel = last_thermo(run_lmp(tmp_path, script, nprocs), ["PotEng", "TotEng", "Press"])
+    assert serial[0] < 0
+    assert parallel == pytest.approx(serial, rel=1e-10)
