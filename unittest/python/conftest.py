@@ -69,14 +69,17 @@ def last_thermo(stdout, columns):
     return [row[c] for c in columns]
 
 
-def fcc_block(lmp, n=4, a=1.0, noise=0.03, temp=0.05, seed=4711):
+def fcc_block(lmp, n=4, a=1.0, noise=0.03, temp=0.05, seed=4711, ntypes=1):
     """Periodic fcc block with nearest-neighbour distance a, IDs independent of the
-    decomposition, random displacements and velocities (units lj, mass 1)."""
+    decomposition, random displacements and velocities (units lj, mass of type t = t;
+    with ntypes 2 half of the atoms, at random, are type 2)."""
     lmp.commands_list([
         "units lj", f"lattice fcc {a * 2 ** 0.5}", f"region box block 0 {n} 0 {n} 0 {n}",
-        "create_box 1 box", "create_atoms 1 box", "mass 1 1.0", "reset_atoms id sort yes",
+        f"create_box {ntypes} box", "create_atoms 1 box", "mass * 1.0", "reset_atoms id sort yes",
         f"displace_atoms all random {noise} {noise} {noise} {seed}",
         f"velocity all create {temp} {seed + 1} loop geom", "neighbor 0.3 bin"])
+    if ntypes == 2:
+        lmp.commands_list([f"set type 1 type/fraction 2 0.5 {seed + 2}", "mass 2 2.0"])
 
 
 def state(lmp):
@@ -97,21 +100,23 @@ def assert_same_state(s1, s2, rtol=1e-12):
 
 
 def pair_curve(pair_style, pair_coeff, r, commands=()):
-    """Energy E(r) and force F(r) (positive = repulsion) of one type pair at the
-    distances r, from the force kernel: one isolated dimer per distance."""
+    """Distances, energies E(r) and forces F(r) (positive = repulsion) of one type pair
+    at the distances r, from the force kernel: one isolated dimer per distance, its atoms
+    at x = -r/2 and r/2 (exact), the dimers stacked along y."""
     r = np.asarray(r, dtype=float)
     spacing = 4.0 * (float(np.max(r)) + 1.0)
     with session() as lmp:
         lmp.commands_list([
             "units lj", "atom_modify map array", "boundary f f f",
-            f"region box block -1 {spacing * len(r)} -{spacing} {spacing} -{spacing} {spacing}",
+            f"region box block -{spacing} {spacing} -1 {spacing * len(r)} -{spacing} {spacing}",
             "create_box 1 box", "mass 1 1.0",
             f"pair_style {pair_style}", f"pair_coeff 1 1 {pair_coeff}", *commands,
             "neighbor 0.1 nsq", "compute pe all pe/atom"])
         for k, rk in enumerate(r):
-            lmp.command(f"create_atoms 1 single {k * spacing} 0 0 units box")
-            lmp.command(f"create_atoms 1 single {k * spacing + rk} 0 0 units box")
+            lmp.command(f"create_atoms 1 single {-rk / 2!r} {k * spacing} 0 units box")
+            lmp.command(f"create_atoms 1 single {rk / 2!r} {k * spacing} 0 units box")
         lmp.command("run 0 post no")
         pe = np.array(lmp.gather("c_pe", 1, 1)).reshape(-1, 2)
         f = np.array(lmp.gather_atoms("f", 1, 3)).reshape(-1, 2, 3)
-    return pe.sum(axis=1), f[:, 1, 0]
+        x = np.array(lmp.gather_atoms("x", 1, 3)).reshape(-1, 2, 3)
+    return x[:, 1, 0] - x[:, 0, 0], pe.sum(axis=1), f[:, 1, 0]
