@@ -1,0 +1,134 @@
+"""What a LAMMPS user expects of a pair style: newton on/off, /omp variants, restart,
+write_data round trip, extract(), no mixing, and MPI runs equal to serial."""
+import pytest
+from conftest import (PLUGIN, assert_same_state, fcc_block, last_thermo, run_lmp, session,
+                      state)
+from spec_laws import Law
+
+STYLES = [  # pair_style, pair_coeff for two types
+    ("morse/spline cut 1.25", ["1 1 1.3 6.0 1.0", "1 2 1.1 5.0 1.02 kappa 1.2 rc 1.3",
+                               "2 2 1.0 6.5 0.98"]),
+    ("lj/spline wagner", ["1 1 1.3 1.0", "1 2 1.1 1.02 kappa 0.9", "2 2 1.0 0.98"]),
+    ("mie/spline lagunov 1.5", ["1 1 1.3 1.0 10 5", "1 2 1.1 1.02 9 6 rs 1.12",
+                                "2 2 1.0 0.98 12 6 kappa 1.1"]),
+    ("harmonic/spline lagunov 1.35 start 1.1", ["1 1 1.3 5.5 1.0", "1 2 1.1 5.0 1.02",
+                                                "2 2 1.0 6.0 0.98 kappa 1.2 rc 1.3"]),
+]
+IDS = [s[0].split()[0] for s in STYLES]
+
+
+def build(lmp, pair_style, coeffs, newton="on", suffix=None):
+    lmp.command(f"newton {newton}")
+    if suffix:
+        lmp.commands_list(["package omp 2", f"suffix {suffix}"])
+    fcc_block(lmp, ntypes=2, noise=0.05)
+    lmp.command(f"pair_style {pair_style}")
+    lmp.commands_list([f"pair_coeff {c}" for c in coeffs] + ["pair_modify shift yes"])
+
+
+@pytest.mark.parametrize("pair_style,coeffs", STYLES, ids=IDS)
+def test_newton_off_equals_newton_on(pair_style, coeffs):
+    results = []
+    for newton in ("on", "off"):
+        with session() as lmp:
+            build(lmp, pair_style, coeffs, newton)
+            results.append(state(lmp))
+    assert_same_state(*results)
+
+
+@pytest.mark.parametrize("pair_style,coeffs", STYLES, ids=IDS)
+def test_omp_variant_equals_plain_style(pair_style, coeffs):
+    results = []
+    for suffix in (None, "omp"):
+        with session() as lmp:
+            build(lmp, pair_style, coeffs, suffix=suffix)
+            results.append(state(lmp))
+            assert lmp.extract_pair_dimension("D") == 2
+            assert lmp.has_style("pair", pair_style.split()[0] + "/omp")
+    assert_same_state(*results)
+
+
+@pytest.mark.parametrize("pair_style,coeffs", STYLES, ids=IDS)
+def test_restart_restores_style_and_coefficients(pair_style, coeffs, tmp_path):
+    restart = tmp_path / "restart.bin"
+    with session() as lmp:
+        build(lmp, pair_style, coeffs)
+        before = state(lmp)
+        lmp.command(f"write_restart {restart}")
+    with session() as lmp:
+        lmp.command(f"read_restart {restart}")
+        after = state(lmp)
+    assert_same_state(before, after, rtol=1e-14)
+
+
+@pytest.mark.parametrize("pair_style,coeffs", STYLES, ids=IDS)
+@pytest.mark.parametrize("which", ["ii", "ij"])
+def test_write_data_round_trip(pair_style, coeffs, which, tmp_path):
+    data = tmp_path / "data.txt"
+    with session() as lmp:
+        build(lmp, pair_style, coeffs)
+        before = state(lmp)
+        lmp.command(f"write_data {data} pair {which}")
+    if which == "ii":  # pair ii writes the i i coefficients only: the rest is re-issued
+        extra = [f"pair_coeff {c}" for c in coeffs if c.split()[0] != c.split()[1]]
+    else:
+        extra = []
+    with session() as lmp:
+        lmp.commands_list(["units lj", f"pair_style {pair_style}", "pair_modify shift yes",
+                           f"read_data {data}", *extra, "neighbor 0.3 bin"])
+        after = state(lmp)
+    assert_same_state(before, after, rtol=1e-14)
+
+
+def test_extract_returns_per_type_pair_coefficients():
+    with session() as lmp:
+        build(lmp, *STYLES[2])
+        lmp.command("run 0 post no")
+        assert lmp.extract_pair("D")[1][2] == 1.1
+        assert lmp.extract_pair("a")[2][1] == 1.02
+        assert lmp.extract_pair("n")[1][2] == 9.0
+        assert lmp.extract_pair("m")[1][1] == 5.0
+        assert lmp.extract_pair("kappa")[2][2] == 1.1
+        assert lmp.extract_pair("alpha") is None
+    with session() as lmp:
+        build(lmp, *STYLES[0])
+        lmp.command("run 0 post no")
+        assert lmp.extract_pair("alpha")[1][2] == 5.0
+        assert lmp.extract_pair("kappa")[1][2] == 1.2
+
+
+def test_fix_adapt_changes_depth_through_extract():
+    """fix adapt scales D through extract(): energy scales with it (cut tail, no shift)."""
+    with session() as lmp:
+        fcc_block(lmp)
+        lmp.commands_list(["pair_style morse/spline cut 1.3", "pair_coeff 1 1 1.0 6.0 1.0"])
+        pe1 = state(lmp)[0]
+        lmp.commands_list(["variable d equal 2.5",
+                           "fix ad all adapt 1 pair morse/spline D 1 1 v_d reset no"])
+        pe2 = state(lmp)[0]
+    assert pe2 == pytest.approx(2.5 * pe1, rel=1e-12)
+
+
+def test_missing_pair_is_an_error_naming_it():
+    with session() as lmp:
+        fcc_block(lmp, ntypes=2)
+        lmp.commands_list(["pair_style morse/spline cut 1.2", "pair_coeff 1 1 1.0 6.0 1.0",
+                           "pair_coeff 2 2 1.0 6.0 1.0"])
+        with pytest.raises(Exception, match="types 1 2 are not set"):
+            lmp.command("run 0")
+
+
+@pytest.mark.parametrize("nprocs", [2, 4])
+@pytest.mark.parametrize("pair_style,coeffs", STYLES[:2], ids=IDS[:2])
+def test_mpi_run_equals_serial(tmp_path, nprocs, pair_style, coeffs):
+    script = "\n".join([
+        f"plugin load {PLUGIN}", "units lj", "lattice fcc 1.4142135623730951",
+        "region box block 0 5 0 5 0 5", "create_box 2 box", "create_atoms 1 box",
+        "mass * 1.0", "reset_atoms id sort yes", "set type 1 type/fraction 2 0.5 77",
+        "displace_atoms all random 0.05 0.05 0.05 4711", "velocity all create 0.1 1 loop geom",
+        f"pair_style {pair_style}", *[f"pair_coeff {c}" for c in coeffs],
+        "neighbor 0.3 bin", "fix 1 all nve", "timestep 0.002",
+        "thermo_style custom step pe ke press", "thermo_modify format float %.15g", "run 200"])
+    serial = last_thermo(run_lmp(tmp_path, script), ["PotEng", "KinEng", "Press"])
+    parallel = last_thermo(run_lmp(tmp_path, script, nprocs), ["PotEng", "KinEng", "Press"])
+    assert parallel == pytest.approx(serial, rel=1e-9)

@@ -1,0 +1,58 @@
+"""Hard case: a strong shock (u = 10 km/s) in a chain of aluminium clusters, SI units, with
+the time step from the shock-stiffened period T_min(u) (spec section 5).  Two half-chains
+collide at +-u/2 (no external work), so the total energy is conserved: to round-off-level
+drift for the smooth tails, and within the energy of the broken bonds' shift for the cut."""
+import math
+
+import numpy as np
+import pytest
+from conftest import session
+
+A, ALPHA, D, M = 1.0e-5, 3.76e5, 2.46e-6, 2.338e-12
+C0 = ALPHA * A * math.sqrt(2 * D / M)
+U = 1.0e4
+
+
+def t_min(u):
+    """T_min(u) = pi a / c(u): c(u) from y + (u/c0)/sqrt(Pi''(ya)/Pi''(a)) = 1 (Morse)."""
+    def stiff(y):
+        e = math.exp(-ALPHA * A * (y - 1))
+        return 2 * e * e - e
+    lo, hi = 0.05, 1.0
+    for _ in range(200):
+        y = 0.5 * (lo + hi)
+        if y + (u / C0) / math.sqrt(stiff(y)) - 1 > 0:
+            hi = y
+        else:
+            lo = y
+    return math.pi * A / (C0 * math.sqrt(stiff(y)))
+
+
+@pytest.mark.parametrize("tail,tolerance", [("wagner", 1e-3), ("lagunov 1.3", 1e-3),
+                                             ("cut 1.2", 5e-2)])
+def test_strong_shock_chain_stays_finite_and_conserves_energy(tail, tolerance):
+    dt = t_min(U) / 50
+    n = 100
+    steps = int(1.5 * n * A / C0 / dt)
+    with session() as lmp:
+        lmp.commands_list([
+            "units si", "atom_modify map array", "boundary m p p",
+            f"lattice sc {A}", f"region box block -0.5 {n + 0.5} -5 5 -5 5",
+            "create_box 1 box", f"region line block -0.5 {n + 0.5} -0.5 0.5 -0.5 0.5",
+            "create_atoms 1 region line", f"mass 1 {M}",
+            f"pair_style morse/spline {tail}", f"pair_coeff 1 1 {D} {ALPHA} {A}",
+            "pair_modify shift yes",
+            f"neighbor {0.2 * A} bin", "neigh_modify every 1 delay 0 check yes",
+            f"region left block INF {n / 2 - 0.1} INF INF INF INF",
+            "group left region left", "group right subtract all left",
+            f"velocity left set {U / 2} 0 0 units box", f"velocity right set {-U / 2} 0 0 units box",
+            f"timestep {dt}", "fix 1 all nve", "thermo_style custom step pe ke etotal",
+            "run 0 post no"])
+        e0 = lmp.get_thermo("etotal")
+        ke0 = lmp.get_thermo("ke")
+        lmp.command(f"run {steps} post no")
+        e1 = lmp.get_thermo("etotal")
+        f = np.array(lmp.gather_atoms("f", 1, 3))
+        x = np.array(lmp.gather_atoms("x", 1, 3))
+    assert np.all(np.isfinite(f)) and np.all(np.isfinite(x))
+    assert abs(e1 - e0) <= tolerance * ke0, (e0, e1, ke0)
