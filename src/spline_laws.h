@@ -48,6 +48,21 @@ namespace ClusterDyn {
     return value;
   }
 
+  // "D alpha a": the arguments of the Morse and harmonic laws
+
+  inline void read_d_alpha_a(const char *style, char **arg, SplineCoeff &c, LAMMPS *lmp)
+  {
+    c.d = positive_arg(style, "D", arg[0], lmp);
+    c.p = positive_arg(style, "alpha", arg[1], lmp);
+    c.a = positive_arg(style, "a", arg[2], lmp);
+    c.q = 0.0;
+  }
+
+  inline std::string args_d_alpha_a(const SplineCoeff &c)
+  {
+    return fmt::format("{} {} {}", c.d, c.p, c.a);
+  }
+
   struct MorseLaw {
     static constexpr const char *style = "morse/spline";
     static constexpr const char *usage = "D alpha a";
@@ -58,14 +73,8 @@ namespace ClusterDyn {
     static constexpr bool singular = false;
     static constexpr bool has_inflection = true;
 
-    static void read(char **arg, SplineCoeff &c, LAMMPS *lmp)
-    {
-      c.d = positive_arg(style, "D", arg[0], lmp);
-      c.p = positive_arg(style, "alpha", arg[1], lmp);
-      c.a = positive_arg(style, "a", arg[2], lmp);
-      c.q = 0.0;
-    }
-    static std::string args(const SplineCoeff &c) { return fmt::format("{} {} {}", c.d, c.p, c.a); }
+    static void read(char **arg, SplineCoeff &c, LAMMPS *lmp) { read_d_alpha_a(style, arg, c, lmp); }
+    static std::string args(const SplineCoeff &c) { return args_d_alpha_a(c); }
     static void setup(SplineCoeff &c)
     {
       c.c1 = c.kappa * c.p;           // alpha kappa
@@ -101,14 +110,8 @@ namespace ClusterDyn {
     static constexpr bool singular = false;
     static constexpr bool has_inflection = false;
 
-    static void read(char **arg, SplineCoeff &c, LAMMPS *lmp)
-    {
-      c.d = positive_arg(style, "D", arg[0], lmp);
-      c.p = positive_arg(style, "alpha", arg[1], lmp);
-      c.a = positive_arg(style, "a", arg[2], lmp);
-      c.q = 0.0;
-    }
-    static std::string args(const SplineCoeff &c) { return fmt::format("{} {} {}", c.d, c.p, c.a); }
+    static void read(char **arg, SplineCoeff &c, LAMMPS *lmp) { read_d_alpha_a(style, arg, c, lmp); }
+    static std::string args(const SplineCoeff &c) { return args_d_alpha_a(c); }
     static void setup(SplineCoeff &c)
     {
       c.c1 = c.kappa * c.kappa * c.p * c.p * c.d;    // (alpha kappa)^2 D
