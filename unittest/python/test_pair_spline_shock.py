@@ -1,7 +1,9 @@
 """Hard case: a strong shock (u = 10 km/s) in a chain of aluminium clusters, SI units, with
 the time step from the shock-stiffened period T_min(u) (spec section 5).  Two half-chains
-collide at +-u/2 (no external work), so the total energy is conserved: to round-off-level
-drift for the smooth tails, and within the energy of the broken bonds' shift for the cut."""
+collide at +-u/2 (no external work), so the total energy is conserved up to the velocity-
+Verlet error at dt = T_min(u)/50.  Measured |drift|/KE0 over 1.5 transit times: wagner
+1.6e-6, lagunov 4.1e-6, cut 5.1e-5 (the cut's force jumps when bonds break); the bounds
+below are about ten times those."""
 import math
 
 import numpy as np
@@ -28,8 +30,8 @@ def t_min(u):
     return math.pi * A / (C0 * math.sqrt(stiff(y)))
 
 
-@pytest.mark.parametrize("tail,tolerance", [("wagner", 1e-3), ("lagunov 1.3", 1e-3),
-                                             ("cut 1.2", 5e-2)])
+@pytest.mark.parametrize("tail,tolerance", [("wagner", 2e-5), ("lagunov 1.3", 4e-5),
+                                             ("cut 1.2", 5e-4)])
 def test_strong_shock_chain_stays_finite_and_conserves_energy(tail, tolerance):
     dt = t_min(U) / 50
     n = 100
