@@ -1,24 +1,28 @@
 """Spline pair styles against stock LAMMPS styles on a thermalised periodic fcc block
 (ghost atoms, periodic images): energy, pressure tensor and forces to round-off."""
-import math
-
+import numpy as np
 import pytest
 from conftest import assert_same_state, fcc_block, session, state
 
 D, ALPHA, A = 1.3, 5.5, 1.0
 
 
-def compare(stock, ours, shift, commands=()):
+def compare(stock, ours, shift):
+    """Global energy, pressure tensor and forces, and per-atom energy and virial."""
     with session() as lmp:
         fcc_block(lmp)
-        lmp.commands_list(commands)
-        results = []
+        lmp.commands_list(["compute epa all pe/atom", "compute spa all stress/atom NULL pair"])
+        results, peratom = [], []
         for pair_style, pair_coeff in (stock, ours):
             lmp.commands_list([f"pair_style {pair_style}", f"pair_coeff * * {pair_coeff}",
                                f"pair_modify shift {shift}"])
             results.append(state(lmp))
+            peratom.append(np.hstack([np.array(lmp.gather("c_epa", 1, 1)).reshape(-1, 1),
+                                      np.array(lmp.gather("c_spa", 1, 6)).reshape(-1, 6)]))
     assert_same_state(*results)
-    return results
+    scale = np.max(np.abs(peratom[0]), axis=0)
+    assert np.all(scale > 0)
+    assert np.all(np.max(np.abs(peratom[0] - peratom[1]), axis=0) <= 1e-12 * scale)
 
 
 @pytest.mark.parametrize("shift", ["no", "yes"])
