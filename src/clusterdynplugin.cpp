@@ -6,6 +6,7 @@
 #include "lammpsplugin.h"
 #include "version.h"
 
+#include "fix_viscous_relative.h"
 #include "pair_spline.h"
 #include "pair_spline_omp.h"
 
@@ -43,6 +44,11 @@ void register_pair(void *lmp, void *handle, lammpsplugin_regfunc register_plugin
   (*register_plugin)(&plugin, lmp);
 }
 
+Fix *create_fix_viscous_relative(LAMMPS *lmp, int narg, char **arg)
+{
+  return new FixViscousRelative(lmp, narg, arg);
+}
+
 }    // namespace
 
 extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
@@ -52,4 +58,14 @@ extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
   register_pair<LJLaw>(lmp, handle, register_plugin);
   register_pair<MieLaw>(lmp, handle, register_plugin);
   register_pair<HarmonicLaw>(lmp, handle, register_plugin);
+
+  lammpsplugin_t plugin;
+  plugin.version = LAMMPS_VERSION;
+  plugin.style = "fix";
+  plugin.name = "viscous/relative";
+  plugin.info = "cluster-dynamics damping on pairwise relative velocities";
+  plugin.author = "cluster-dynamics plugin developers";
+  plugin.creator.v2 = (lammpsplugin_factory2 *) &create_fix_viscous_relative;
+  plugin.handle = handle;
+  (*register_plugin)(&plugin, lmp);
 }

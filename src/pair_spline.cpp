@@ -25,7 +25,7 @@ template <class Law> PairSpline<Law>::PairSpline(LAMMPS *lmp) : Pair(lmp)
   born_matrix_enable = 1;
   tail = CUT;
   rc_global = rs_global = 0.0;
-  d0 = a0 = p0 = q0 = kappa = rc_pair = rs_pair = cut = nullptr;
+  d0 = a0 = p0 = q0 = kappa = rc_pair = rs_pair = cut = stiffness = nullptr;
   coeffs = nullptr;
   kappa_any = 0;
 }
@@ -44,6 +44,7 @@ template <class Law> PairSpline<Law>::~PairSpline()
     memory->destroy(kappa);
     memory->destroy(rc_pair);
     memory->destroy(rs_pair);
+    memory->destroy(stiffness);
     delete[] coeffs;
   }
 }
@@ -146,6 +147,7 @@ template <class Law> void PairSpline<Law>::allocate()
   memory->create(kappa, np1, np1, "pair:kappa");
   memory->create(rc_pair, np1, np1, "pair:rc_pair");
   memory->create(rs_pair, np1, np1, "pair:rs_pair");
+  memory->create(stiffness, np1, np1, "pair:stiffness");
   coeffs = new SplineCoeff[np1 * np1]();
 }
 
@@ -344,7 +346,11 @@ template <class Law> double PairSpline<Law>::init_one(int i, int j)
                "not mix: give pair_coeff {} {} ...)", Law::style, i, j, i, j);
   derive(i, j);
   for (auto *v : {d0, a0, p0, q0, kappa, rc_pair, rs_pair}) v[j][i] = v[i][j];
-  cut[i][j] = cut[j][i] = pair_coeff(i, j).rc;
+  const SplineCoeff &c = pair_coeff(i, j);
+  double d[4];
+  Law::derivs(c, c.a, d);
+  stiffness[i][j] = stiffness[j][i] = c.kappa * c.kappa * d[2];
+  cut[i][j] = cut[j][i] = c.rc;
   return cut[i][j];
 }
 
@@ -503,6 +509,7 @@ template <class Law> void *PairSpline<Law>::extract(const char *str, int &dim)
   if (strcmp(str, "D") == 0) return (void *) d0;
   if (strcmp(str, "a") == 0) return (void *) a0;
   if (strcmp(str, "kappa") == 0) return (void *) kappa;
+  if (strcmp(str, "C") == 0) return (void *) stiffness;
   if constexpr (Law::p_name != nullptr)
     if (strcmp(str, Law::p_name) == 0) return (void *) p0;
   if constexpr (Law::q_name != nullptr)
@@ -513,7 +520,7 @@ template <class Law> void *PairSpline<Law>::extract(const char *str, int &dim)
 template <class Law> double PairSpline<Law>::memory_usage()
 {
   const double np1 = atom->ntypes + 1;
-  return np1 * np1 * (2.0 * sizeof(int) + 9.0 * sizeof(double) + sizeof(SplineCoeff));
+  return np1 * np1 * (2.0 * sizeof(int) + 10.0 * sizeof(double) + sizeof(SplineCoeff));
 }
 
 namespace LAMMPS_NS {

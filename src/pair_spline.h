@@ -82,6 +82,7 @@ namespace ClusterDyn {
     // per type pair input, as given (the LAMMPS interface: extract, restart, data)
     double **d0, **a0, **p0, **q0, **kappa, **rc_pair, **rs_pair;    // rc, rs: 0 = global
     double **cut;
+    double **stiffness;         // C = Pi''(a) of the kappa-modified law (extract "C")
 
     SplineCoeff *coeffs;        // (ntypes+1)^2 packed kernel data
     int kappa_any;              // some pair has kappa != 1: use the general kernel

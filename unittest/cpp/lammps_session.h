@@ -8,6 +8,7 @@
 
 #include "force.h"
 #include "input.h"
+#include "modify.h"
 #include "lammps.h"
 #include "library.h"
 #include "platform.h"
@@ -28,6 +29,12 @@ inline const std::vector<std::string> &plugin_pair_styles()
   return styles;
 }
 
+inline const std::vector<std::string> &plugin_fix_styles()
+{
+  static const std::vector<std::string> styles = {"viscous/relative"};
+  return styles;
+}
+
 // load the plugin by path; throws with a clear message when it is missing or
 // does not register its styles
 inline void load_plugin(LAMMPS_NS::LAMMPS *lmp, const std::string &path)
@@ -38,6 +45,9 @@ inline void load_plugin(LAMMPS_NS::LAMMPS *lmp, const std::string &path)
   for (const auto &style : plugin_pair_styles())
     if (lmp->force->pair_map->count(style) == 0)
       throw std::runtime_error("plugin " + path + " did not register pair style " + style);
+  for (const auto &style : plugin_fix_styles())
+    if (lmp->modify->fix_map->count(style) == 0)
+      throw std::runtime_error("plugin " + path + " did not register fix style " + style);
 }
 
 class Session {

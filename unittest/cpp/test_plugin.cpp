@@ -13,6 +13,8 @@ TEST(Plugin, LoadsByPathAndRegistersEveryStyle)
   Session s;
   for (const auto &style : plugin_pair_styles())
     EXPECT_EQ(s.lmp->force->pair_map->count(style), 1U) << style;
+  for (const auto &style : plugin_fix_styles())
+    EXPECT_EQ(s.lmp->modify->fix_map->count(style), 1U) << style;
 }
 
 TEST(Plugin, MissingFileFailsClearly)

@@ -17,6 +17,7 @@ PLUGIN = os.environ["CLUSTERDYN_PLUGIN"]
 LMP = os.environ["CLUSTERDYN_LMP"]
 PAIR_STYLES = [s + v for s in ("morse/spline", "lj/spline", "mie/spline", "harmonic/spline")
                for v in ("", "/omp")]
+FIX_STYLES = ["viscous/relative"]
 
 
 def load_plugin(lmp, path=PLUGIN):
@@ -24,9 +25,10 @@ def load_plugin(lmp, path=PLUGIN):
     if not os.path.isfile(path):
         raise FileNotFoundError(f"plugin file {path} does not exist")
     lmp.command(f"plugin load {path}")
-    missing = [s for s in PAIR_STYLES if not lmp.has_style("pair", s)]
+    missing = [("pair", s) for s in PAIR_STYLES if not lmp.has_style("pair", s)]
+    missing += [("fix", s) for s in FIX_STYLES if not lmp.has_style("fix", s)]
     if missing:
-        raise RuntimeError(f"plugin {path} did not register pair styles {missing}")
+        raise RuntimeError(f"plugin {path} did not register the styles {missing}")
 
 
 @contextlib.contextmanager

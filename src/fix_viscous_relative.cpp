@@ -1,0 +1,389 @@
+/* ----------------------------------------------------------------------
+   Cluster-dynamics plugin for LAMMPS: fix viscous/relative.
+
+   Each pair (i,j) of group atoms closer than the damping range gets
+     F_i = -F_j = -m_ij G_ij w(r) dv,   dv = v_i - v_j  (mode full)
+                                         or (dv . e) e   (mode normal)
+   with m_ij = 2 m_i m_j / (m_i + m_j), so the forces cancel in pairs and
+   the total momentum is conserved.  post_force() sums them on a half
+   neighbor list into fd (own and ghost atoms), adds the ghost parts to
+   their owners (reverse communication), then adds fd to f.
+
+   Energy removed: velocity Verlet applies a force F computed at step k in
+   two half kicks, v(k-1/2) -> v(k) -> v(k+1/2); the work of each half kick
+   is exactly (dt/4) F . (v_before + v_after).  The fix sums it over its own
+   forces, so the balance closes to the integrator's own accuracy.
+------------------------------------------------------------------------- */
+
+#include "fix_viscous_relative.h"
+
+#include "pair_spline.h"    // xyz3
+
+#include "atom.h"
+#include "comm.h"
+#include "error.h"
+#include "force.h"
+#include "memory.h"
+#include "neigh_list.h"
+#include "neigh_request.h"
+#include "neighbor.h"
+#include "pair.h"
+#include "update.h"
+
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+using namespace ClusterDyn;
+
+FixViscousRelative::FixViscousRelative(LAMMPS *lmp, int narg, char **arg) :
+    Fix(lmp, narg, arg), typepair(nullptr), fd(nullptr), maxfd(0),
+    removed(0.0), power_full(0.0), list(nullptr)
+{
+  if (narg < 5)
+    error->all(FLERR, "Fix viscous/relative: expected fix ID group viscous/relative gamma G | J J "
+               "[mode full|normal] [weight none|dpd] [cutoff d]");
+  if (strcmp(arg[3], "gamma") == 0) by_j = 0;
+  else if (strcmp(arg[3], "J") == 0) by_j = 1;
+  else error->all(FLERR, "Fix viscous/relative: unknown style '{}' (expected gamma or J)", arg[3]);
+  value = utils::numeric(FLERR, arg[4], false, lmp);
+  if (!(value > 0.0))
+    error->all(FLERR, "Fix viscous/relative: {} must be > 0 (got {})", arg[3], arg[4]);
+
+  normal = dpd = 0;
+  cutoff_user = 0.0;
+  for (int iarg = 5; iarg < narg; iarg += 2) {
+    if (iarg + 1 >= narg)
+      error->all(FLERR, "Fix viscous/relative: keyword {} needs a value", arg[iarg]);
+    const std::string key = arg[iarg], val = arg[iarg + 1];
+    if (key == "mode") {
+      if (val == "full") normal = 0;
+      else if (val == "normal") normal = 1;
+      else error->all(FLERR, "Fix viscous/relative: unknown mode '{}' (expected full or normal)", val);
+    } else if (key == "weight") {
+      if (val == "none") dpd = 0;
+      else if (val == "dpd") dpd = 1;
+      else error->all(FLERR, "Fix viscous/relative: unknown weight '{}' (expected none or dpd)", val);
+    } else if (key == "cutoff") {
+      cutoff_user = utils::numeric(FLERR, val, false, lmp);
+      if (!(cutoff_user > 0.0))
+        error->all(FLERR, "Fix viscous/relative: cutoff must be > 0 (got {})", val);
+    } else
+      error->all(FLERR, "Fix viscous/relative: unknown keyword '{}' (expected mode, weight or "
+                 "cutoff)", key);
+  }
+
+  scalar_flag = 1;
+  global_freq = 1;
+  extscalar = 1;
+  energy_global_flag = 1;
+  virial_global_flag = 1;
+  restart_global = 1;
+  comm_reverse = 3;
+  typepair = new TypePair[(atom->ntypes + 1) * (atom->ntypes + 1)]();
+}
+
+FixViscousRelative::~FixViscousRelative()
+{
+  delete[] typepair;
+  memory->destroy(fd);
+}
+
+int FixViscousRelative::setmask()
+{
+  return POST_FORCE | POST_INTEGRATE | END_OF_STEP;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixViscousRelative::init()
+{
+  if (!force->pair && cutoff_user == 0.0)
+    error->all(FLERR, "Fix viscous/relative needs a pair style (its cutoffs are the damping "
+               "range) or the cutoff keyword");
+  double **stiffness = nullptr;
+  if (by_j) {
+    int dim = 0;
+    if (force->pair) stiffness = (double **) force->pair->extract("C", dim);
+    if (!stiffness || dim != 2)
+      error->all(FLERR, "Fix viscous/relative J needs a pair style that provides the bond "
+                 "stiffness C (this package's */spline styles); use gamma G with others");
+  }
+  const int ntypes = atom->ntypes;
+  for (int i = 1; i <= ntypes; i++)
+    for (int j = 1; j <= ntypes; j++) {
+      TypePair &tp = typepair[i * (ntypes + 1) + j];
+      tp.cutsq = cutoff_user > 0.0 ? cutoff_user * cutoff_user : force->pair->cutsq[i][j];
+      tp.inv_cut = tp.cutsq > 0.0 ? 1.0 / sqrt(tp.cutsq) : 0.0;
+      tp.stiffness = by_j ? stiffness[i][j] : 0.0;
+      tp.coef = atom->rmass ? 0.0 : friction(tp, atom->mass[i], atom->mass[j]);
+    }
+
+  // relative velocities need ghost velocities
+  comm->ghost_velocity = 1;
+
+  // the pair style's list covers the damping range unless the cutoff is longer
+  auto req = neighbor->add_request(this);
+  if (cutoff_user > 0.0 && (!force->pair || cutoff_user > force->pair->cutforce)) {
+    const double skin = neighbor->skin;
+    const double cutghost = force->pair ? MAX(force->pair->cutforce + skin, comm->cutghostuser)
+                                        : comm->cutghostuser;
+    if (cutoff_user + skin > cutghost)
+      error->all(FLERR, "Fix viscous/relative: cutoff {} plus skin {} exceeds the ghost atom "
+                 "range {}: raise it with comm_modify cutoff", cutoff_user, skin, cutghost);
+    req->set_cutoff(cutoff_user + skin);
+  }
+}
+
+void FixViscousRelative::init_list(int, NeighList *ptr)
+{
+  list = ptr;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixViscousRelative::setup(int vflag)
+{
+  check_stability();
+  power_full = compute_forces(vflag);    // v(0): no kick before the first output
+}
+
+void FixViscousRelative::post_force(int vflag)
+{
+  removed -= 0.25 * update->dt * compute_forces(vflag);    // first half kick, v(k-1/2) side
+}
+
+void FixViscousRelative::end_of_step()
+{
+  power_full = power();
+  removed -= 0.25 * update->dt * power_full;    // first half kick, v(k) side
+}
+
+void FixViscousRelative::post_integrate()
+{
+  // second half kick v(k) -> v(k+1/2) with the forces of step k; atoms have not moved
+  // between processors since then
+  removed -= 0.25 * update->dt * (power_full + power());
+}
+
+double FixViscousRelative::friction(const TypePair &tp, double mi, double mj) const
+{
+  const double mij = 2.0 * mi * mj / (mi + mj);
+  return by_j ? sqrt(tp.stiffness * mij) / value : mij * value;
+}
+
+double FixViscousRelative::power() const
+{
+  const double *const *const v = atom->v;
+  double p = 0.0;
+  for (int i = 0; i < atom->nlocal; i++)
+    p += fd[i][0] * v[i][0] + fd[i][1] * v[i][1] + fd[i][2] * v[i][2];
+  return p;
+}
+
+/* ---------------------------------------------------------------------- */
+
+double FixViscousRelative::compute_forces(int vflag)
+{
+  v_init(vflag);
+  if (atom->nmax > maxfd) {
+    maxfd = atom->nmax;
+    memory->destroy(fd);
+    memory->create(fd, maxfd, 3, "viscous/relative:fd");
+  }
+  const int nall = atom->nlocal + atom->nghost;
+  if (nall) memset(&fd[0][0], 0, 3 * sizeof(double) * nall);
+
+  // compile-time options: a scene pays only for what it uses
+  const int rmass = atom->rmass != nullptr;
+  const int all = groupbit == 1;    // group all: no mask lookups
+  if (rmass || !all) {
+    if (normal) dpd ? damp<1, 1, 1>() : damp<1, 0, 1>();
+    else dpd ? damp<0, 1, 1>() : damp<0, 0, 1>();
+  } else {
+    if (normal) dpd ? damp<1, 1, 0>() : damp<1, 0, 0>();
+    else dpd ? damp<0, 1, 0>() : damp<0, 0, 0>();
+  }
+  if (force->newton_pair) comm->reverse_comm(this);
+
+  // add to the forces; return the power sum fd . v of my atoms
+  double **f = atom->f;
+  const double *const *const v = atom->v;
+  double p = 0.0;
+  for (int i = 0; i < atom->nlocal; i++) {
+    f[i][0] += fd[i][0];
+    f[i][1] += fd[i][1];
+    f[i][2] += fd[i][2];
+    p += fd[i][0] * v[i][0] + fd[i][1] * v[i][1] + fd[i][2] * v[i][2];
+  }
+  return p;
+}
+
+// GENERAL: per-atom masses or a group other than all (else: per-type masses, group all)
+template <int NORMAL, int DPD, int GENERAL> void FixViscousRelative::damp()
+{
+  const auto *_noalias const x = (xyz3 *) atom->x[0];
+  const auto *_noalias const v = (xyz3 *) atom->v[0];
+  auto *_noalias const fdamp = (xyz3 *) fd[0];
+  const int *_noalias const type = atom->type;
+  const int *_noalias const mask = atom->mask;
+  const double *_noalias const rmass = atom->rmass;
+  const int nlocal = atom->nlocal;
+  const int newton_pair = force->newton_pair;
+  const int ntp1 = atom->ntypes + 1;
+  const int inum = list->inum;
+
+  for (int ii = 0; ii < inum; ii++) {
+    const int i = list->ilist[ii];
+    if (GENERAL && !(mask[i] & groupbit)) continue;
+    const TypePair *tpi = typepair + type[i] * ntp1;
+    const double xtmp = x[i].x, ytmp = x[i].y, ztmp = x[i].z;
+    const double vxtmp = v[i].x, vytmp = v[i].y, vztmp = v[i].z;
+    double fxtmp = 0.0, fytmp = 0.0, fztmp = 0.0;
+    const int *jlist = list->firstneigh[i];
+    const int jnum = list->numneigh[i];
+    for (int jj = 0; jj < jnum; jj++) {
+      const int j = jlist[jj] & NEIGHMASK;
+      const double delx = xtmp - x[j].x;
+      const double dely = ytmp - x[j].y;
+      const double delz = ztmp - x[j].z;
+      const double rsq = delx * delx + dely * dely + delz * delz;
+      const TypePair &tp = tpi[type[j]];
+      if (rsq >= tp.cutsq || (GENERAL && !(mask[j] & groupbit))) continue;
+
+      double coef = GENERAL && rmass ? friction(tp, rmass[i], rmass[j]) : tp.coef;
+      if (DPD) {
+        const double w = 1.0 - sqrt(rsq) * tp.inv_cut;
+        coef *= w * w;
+      }
+      double dvx = vxtmp - v[j].x;
+      double dvy = vytmp - v[j].y;
+      double dvz = vztmp - v[j].z;
+      if (NORMAL) {
+        const double proj = (dvx * delx + dvy * dely + dvz * delz) / rsq;
+        dvx = proj * delx;
+        dvy = proj * dely;
+        dvz = proj * delz;
+      }
+      const double fx = -coef * dvx, fy = -coef * dvy, fz = -coef * dvz;
+      fxtmp += fx;
+      fytmp += fy;
+      fztmp += fz;
+      if (newton_pair || j < nlocal) {
+        fdamp[j].x -= fx;
+        fdamp[j].y -= fy;
+        fdamp[j].z -= fz;
+      }
+      if (vflag_global) {
+        int pair[2] = {i, j};
+        double vir[6] = {delx * fx, dely * fy, delz * fz, delx * fy, delx * fz, dely * fz};
+        v_tally((newton_pair || j < nlocal) ? 2 : 1, pair, 2.0, vir);
+      }
+    }
+    fdamp[i].x += fxtmp;
+    fdamp[i].y += fytmp;
+    fdamp[i].z += fztmp;
+  }
+}
+
+/* ----------------------------------------------------------------------
+   warn when G x (bonds per atom) x dt exceeds 1: the explicit update of the
+   relative velocities (eigenvalues up to 2 G x bonds) is then unstable
+------------------------------------------------------------------------- */
+
+void FixViscousRelative::check_stability()
+{
+  const int nlocal = atom->nlocal;
+  if (atom->nmax > maxfd) {
+    maxfd = atom->nmax;
+    memory->destroy(fd);
+    memory->create(fd, maxfd, 3, "viscous/relative:fd");
+  }
+  const int nall = nlocal + atom->nghost;
+  if (nall) memset(&fd[0][0], 0, 3 * sizeof(double) * nall);
+  const double *const *const x = atom->x;
+  const int *type = atom->type;
+  const int *mask = atom->mask;
+  double rate_max = 0.0;
+  for (int ii = 0; ii < list->inum; ii++) {
+    const int i = list->ilist[ii];
+    if (!(mask[i] & groupbit)) continue;
+    for (int jj = 0; jj < list->numneigh[i]; jj++) {
+      const int j = list->firstneigh[i][jj] & NEIGHMASK;
+      if (!(mask[j] & groupbit)) continue;
+      const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
+      const TypePair &tp = typepair[type[i] * (atom->ntypes + 1) + type[j]];
+      if (dx * dx + dy * dy + dz * dz >= tp.cutsq) continue;
+      fd[i][0] += 1.0;
+      if (force->newton_pair || j < nlocal) fd[j][0] += 1.0;
+      const double mi = atom->rmass ? atom->rmass[i] : atom->mass[type[i]];
+      const double mj = atom->rmass ? atom->rmass[j] : atom->mass[type[j]];
+      rate_max = MAX(rate_max, friction(tp, mi, mj) * (mi + mj) / (2.0 * mi * mj));
+    }
+  }
+  if (force->newton_pair) comm->reverse_comm(this);
+  double bonds = 0.0;
+  for (int i = 0; i < nlocal; i++) bonds = MAX(bonds, fd[i][0]);
+  double mine[2] = {bonds, rate_max}, all[2];
+  MPI_Allreduce(mine, all, 2, MPI_DOUBLE, MPI_MAX, world);
+  const double product = all[1] * all[0] * update->dt;
+  if (product > 1.0 && comm->me == 0)
+    error->warning(FLERR, "Fix viscous/relative: G x bonds x dt = {:.3g} x {} x {:.3g} = {:.3g} > 1:"
+                   " the damping is unstable with explicit integration; use a time step below "
+                   "{:.3g}", all[1], (int) all[0], update->dt, product, 1.0 / (all[1] * all[0]));
+}
+
+/* ---------------------------------------------------------------------- */
+
+double FixViscousRelative::compute_scalar()
+{
+  double all = 0.0;
+  MPI_Allreduce(&removed, &all, 1, MPI_DOUBLE, MPI_SUM, world);
+  return all;
+}
+
+void FixViscousRelative::write_restart(FILE *fp)
+{
+  double all = compute_scalar();    // collective: every proc calls write_restart
+  if (comm->me == 0) {
+    int size = sizeof(double);
+    fwrite(&size, sizeof(int), 1, fp);
+    fwrite(&all, sizeof(double), 1, fp);
+  }
+}
+
+void FixViscousRelative::restart(char *buf)
+{
+  double all;
+  memcpy(&all, buf, sizeof(double));
+  removed = comm->me == 0 ? all : 0.0;
+}
+
+int FixViscousRelative::pack_reverse_comm(int n, int first, double *buf)
+{
+  int m = 0;
+  for (int i = first; i < first + n; i++) {
+    buf[m++] = fd[i][0];
+    buf[m++] = fd[i][1];
+    buf[m++] = fd[i][2];
+  }
+  return m;
+}
+
+void FixViscousRelative::unpack_reverse_comm(int n, int *list_, double *buf)
+{
+  int m = 0;
+  for (int i = 0; i < n; i++) {
+    const int j = list_[i];
+    fd[j][0] += buf[m++];
+    fd[j][1] += buf[m++];
+    fd[j][2] += buf[m++];
+  }
+}
+
+double FixViscousRelative::memory_usage()
+{
+  return (double) maxfd * 3 * sizeof(double) +
+      (double) (atom->ntypes + 1) * (atom->ntypes + 1) * sizeof(TypePair);
+}

@@ -1,0 +1,60 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   Cluster-dynamics plugin for LAMMPS: fix viscous/relative, damping on
+   the relative velocities of bonded pairs (doc/fix_viscous_relative.rst).
+------------------------------------------------------------------------- */
+
+#ifndef LMP_CLUSTERDYN_FIX_VISCOUS_RELATIVE_H
+#define LMP_CLUSTERDYN_FIX_VISCOUS_RELATIVE_H
+
+#include "fix.h"
+
+namespace LAMMPS_NS {
+namespace ClusterDyn {
+
+  class FixViscousRelative : public Fix {
+   public:
+    FixViscousRelative(class LAMMPS *, int, char **);
+    ~FixViscousRelative() override;
+    int setmask() override;
+    void init() override;
+    void init_list(int, class NeighList *) override;
+    void setup(int) override;
+    void post_force(int) override;
+    void post_integrate() override;
+    void end_of_step() override;
+    double compute_scalar() override;
+    void write_restart(FILE *) override;
+    void restart(char *) override;
+    int pack_reverse_comm(int, int, double *) override;
+    void unpack_reverse_comm(int, int *, double *) override;
+    double memory_usage() override;
+
+   private:
+    int by_j;                // 0: rate G given; 1: G_ij = sqrt(C_ij / m_ij) / J
+    double value;            // G or J
+    int normal, dpd;         // mode normal, weight dpd
+    double cutoff_user;      // 0: the pair style's cutoff of each type pair
+    struct TypePair {
+      double cutsq;          // damping range, squared
+      double inv_cut;        // 1 / damping range (weight dpd)
+      double coef;           // m_ij G_ij for per-type masses
+      double stiffness;      // C_ij from the pair style (J style)
+    };
+    TypePair *typepair;      // (ntypes+1)^2
+    double **fd;             // damping force per atom (own and ghost), summed to owners
+    int maxfd;
+    double removed;          // energy removed by this proc's kicks
+    double power_full;       // sum of fd . v at the last full step (trapezoid rule)
+    class NeighList *list;
+
+    double compute_forces(int vflag);    // returns the power sum of my atoms
+    template <int NORMAL, int DPD, int GENERAL> void damp();
+    double friction(const TypePair &tp, double mi, double mj) const;    // m_ij G_ij
+    double power() const;    // sum over my atoms of fd . v
+    void check_stability();
+  };
+
+}    // namespace ClusterDyn
+}    // namespace LAMMPS_NS
+
+#endif

@@ -1,0 +1,296 @@
+"""fix viscous/relative against independent oracles: conservation laws, the closed-form
+decay of a pair, pair_style dpd/tstat at zero temperature, fix viscous, the energy
+balance, serial vs MPI, restart, stability and bad input."""
+import ctypes
+import math
+
+import numpy as np
+import pytest
+from conftest import PLUGIN, fcc_block, last_thermo, run_lmp, session
+
+
+def arrays(lmp, name, n=3):
+    return np.array(lmp.gather_atoms(name, 1, n)).reshape(-1, n)
+
+
+def momentum(lmp):
+    return arrays(lmp, "v").sum(axis=0)  # unit masses
+
+
+def thermal_morse(lmp, fix, temp=0.3, ntypes=1):
+    fcc_block(lmp, noise=0.05, temp=temp, ntypes=ntypes)
+    lmp.commands_list(["pair_style morse/spline cut 1.3", "pair_coeff * * 1.0 6.0 1.0",
+                       "pair_modify shift yes", "timestep 0.002", "fix nve all nve", fix,
+                       "thermo_style custom step pe ke", "thermo_modify norm no"])
+
+
+@pytest.mark.parametrize("mode", ["full", "normal"])
+@pytest.mark.parametrize("weight", ["none", "dpd"])
+def test_momentum_is_conserved_and_energy_removed(mode, weight):
+    with session() as lmp:
+        thermal_morse(lmp, f"fix damp all viscous/relative gamma 2.0 mode {mode} weight {weight}",
+                      ntypes=2)  # masses 1 and 2
+        masses = {1: 1.0, 2: 2.0}
+        def total_p():
+            t = np.array(lmp.gather_atoms("type", 0, 1))
+            return (arrays(lmp, "v") * np.array([masses[k] for k in t])[:, None]).sum(axis=0)
+        lmp.command("velocity all set 0.3 -0.2 0.1 sum yes units box")  # a drift to keep
+        p0, ke0 = total_p(), None
+        lmp.command("run 0 post no")
+        ke0 = lmp.get_thermo("ke")
+        lmp.command("run 500 post no")
+        p1 = total_p()
+        removed = lmp.extract_fix("damp", 0, 0)
+    assert np.max(np.abs(p1 - p0)) <= 1e-12 * np.max(np.abs(p0))
+    assert 0.0 < removed < ke0 * 1e4
+
+
+def rigid_body(lmp, fix, omega=0.0, vel=(0.0, 0.0, 0.0)):
+    """A free fcc cluster, no pair forces (pair zero gives the damping range)."""
+    lmp.commands_list([
+        "units lj", "boundary s s s", "atom_modify map array", "lattice fcc 1.4142135623730951",
+        "region box block 0 3 0 3 0 3", "create_box 1 box", "create_atoms 1 box", "mass 1 1.0",
+        "pair_style zero 1.2", "pair_coeff * *", "neighbor 0.3 bin", "timestep 0.001",
+        "fix nve all nve", fix])
+    x = arrays(lmp, "x")
+    c = x.mean(axis=0)
+    v = np.array(vel) + omega * np.stack([-(x[:, 1] - c[1]), x[:, 0] - c[0], 0 * x[:, 0]], axis=1)
+    flat = v.ravel()
+    lmp.scatter_atoms("v", 1, 3, (ctypes.c_double * len(flat))(*flat))
+    return c
+
+
+def angular_momentum(lmp):
+    x, v = arrays(lmp, "x"), arrays(lmp, "v")
+    return np.cross(x - x.mean(axis=0), v).sum(axis=0)
+
+
+@pytest.mark.parametrize("mode", ["full", "normal"])
+def test_rigid_translation_is_not_damped(mode):
+    with session() as lmp:
+        rigid_body(lmp, f"fix damp all viscous/relative gamma 5.0 mode {mode}",
+                   vel=(0.4, -0.3, 0.2))
+        lmp.command("run 200 post no")
+        v = arrays(lmp, "v")
+        assert lmp.extract_fix("damp", 0, 0) == 0.0
+    assert np.allclose(v, [0.4, -0.3, 0.2], rtol=0, atol=1e-14)
+
+
+def test_rigid_rotation_damped_in_full_mode_not_in_normal_mode():
+    result = {}
+    for mode in ("full", "normal"):
+        with session() as lmp:
+            rigid_body(lmp, f"fix damp all viscous/relative gamma 5.0 mode {mode}", omega=0.2)
+            l0 = angular_momentum(lmp)
+            lmp.command("run 200 post no")
+            result[mode] = (l0, angular_momentum(lmp), lmp.extract_fix("damp", 0, 0))
+    l0, l1, removed = result["full"]
+    assert abs(l1[2]) < 0.9 * abs(l0[2]) and removed > 0
+    l0, l1, removed = result["normal"]
+    # normal mode: central forces conserve L (the rotation stretches bonds only to O(dt^2))
+    assert np.max(np.abs(l1 - l0)) <= 1e-6 * abs(l0[2])
+
+
+def pair_decay(g, dt, t_end):
+    """Relative velocity of two free particles (no pair force) after t_end."""
+    with session() as lmp:
+        lmp.commands_list([
+            "units lj", "atom_modify map array", "region box block -5 5 -5 5 -5 5",
+            "create_box 1 box", "create_atoms 1 single -0.5 0 0", "create_atoms 1 single 0.5 0 0",
+            "mass 1 1.0", "pair_style zero 1.5", "pair_coeff * *", f"timestep {dt}",
+            "fix nve all nve", f"fix damp all viscous/relative gamma {g}",
+            "velocity all set 0 0 0", "set atom 1 vy 0.05", "set atom 2 vy -0.05",
+            f"run {round(t_end / dt)} post no"])
+        v = arrays(lmp, "v")
+    return v[0, 1] - v[1, 1]
+
+
+def test_pair_relative_velocity_decays_as_exp_minus_2_g_t():
+    """The damping acts on the half-step velocity (as pair dpd/tstat does), so the decay
+    rate is exact to first order in G dt: measured error 0.80 % at 2 G dt = 0.008."""
+    g, t_end = 2.0, 0.5
+    exact = 0.1 * math.exp(-2 * g * t_end)
+    err = {dt: pair_decay(g, dt, t_end) - exact for dt in (0.002, 0.001)}
+    assert abs(err[0.002]) <= 1.2 * 2 * g * 0.002 * exact, err
+    assert 1.8 <= err[0.002] / err[0.001] <= 2.2, err  # first order in dt
+
+
+def test_normal_dpd_weight_equals_pair_dpd_tstat_at_zero_temperature():
+    gamma, rc = 1.5, 1.3
+    runs = []
+    for variant in ("dpd", "fix"):
+        with session() as lmp:
+            lmp.command("comm_modify vel yes")
+            fcc_block(lmp, noise=0.05, temp=0.5)
+            if variant == "dpd":
+                lmp.commands_list([f"pair_style hybrid/overlay morse {rc} dpd/tstat 0 0 {rc} 4242",
+                                   "pair_coeff * * morse 1.0 6.0 1.0",
+                                   f"pair_coeff * * dpd/tstat {gamma}"])
+            else:
+                lmp.commands_list([f"pair_style morse {rc}", "pair_coeff * * 1.0 6.0 1.0",
+                                   f"fix damp all viscous/relative gamma {gamma} mode normal "
+                                   f"weight dpd cutoff {rc}", "fix_modify damp virial yes"])
+            lmp.commands_list(["timestep 0.002", "fix nve all nve",
+                               "thermo_style custom step ke press pxy", "run 100 post no"])
+            runs.append((arrays(lmp, "x"), arrays(lmp, "v"),
+                         [lmp.get_thermo(k) for k in ("ke", "press", "pxy")]))
+    (x1, v1, t1), (x2, v2, t2) = runs
+    assert np.max(np.abs(x1 - x2)) <= 1e-11
+    assert np.max(np.abs(v1 - v2)) <= 1e-10 * np.max(np.abs(v1))
+    assert t2 == pytest.approx(t1, rel=1e-9)
+
+
+def test_fix_viscous_loses_momentum_this_fix_keeps_it():
+    p = {}
+    for fix in ("fix damp all viscous 2.0", "fix damp all viscous/relative gamma 2.0"):
+        with session() as lmp:
+            thermal_morse(lmp, fix)
+            lmp.command("velocity all set 0.5 0 0 sum yes units box")
+            p0 = momentum(lmp)
+            lmp.command("run 200 post no")
+            p[fix.split()[3]] = (p0, momentum(lmp))
+    p0, p1 = p["viscous"]
+    assert p1[0] < 0.6 * p0[0]
+    p0, p1 = p["viscous/relative"]
+    assert abs(p1[0] - p0[0]) <= 1e-12 * abs(p0[0])
+
+
+def energy_balance_error(dt, steps_time=2.0):
+    with session() as lmp:
+        thermal_morse(lmp, "fix damp all viscous/relative gamma 1.0")
+        lmp.commands_list([f"timestep {dt}", "run 0 post no"])
+        e0 = lmp.get_thermo("pe") + lmp.get_thermo("ke")
+        lmp.command(f"run {round(steps_time / dt)} post no")
+        e1 = lmp.get_thermo("pe") + lmp.get_thermo("ke")
+        removed = lmp.extract_fix("damp", 0, 0)
+    return e0 - e1 - removed, removed
+
+
+def test_energy_balance_thermal_block_is_second_order():
+    """Initial energy = kinetic + potential + removed, to O(dt^2): measured errors 0.408,
+    0.107, 0.028 of 315 removed at dt = 0.004, 0.002, 0.001 (T0 = 0.74)."""
+    err1, removed = energy_balance_error(0.004)
+    err2, _ = energy_balance_error(0.002)
+    assert removed > 0
+    assert abs(err1) <= 2e-3 * removed, (err1, removed)
+    assert abs(err2) <= 0.3 * abs(err1), (err1, err2)  # O(dt^2): a quarter
+
+
+def test_energy_balance_piston_chain():
+    """Piston work (trapezoid rule on the piston's force) + initial energy = kinetic +
+    potential + removed, for a 1D Morse chain driven at u (reduced units)."""
+    u, dt, n = 0.5, 0.002, 40
+    with session() as lmp:
+        lmp.commands_list([
+            "units lj", "atom_modify map array", "boundary m p p", "lattice sc 1.0",
+            f"region box block -0.5 {n + 0.5} -5 5 -5 5", "create_box 1 box",
+            f"region line block -0.5 {n + 0.5} -0.5 0.5 -0.5 0.5", "create_atoms 1 region line",
+            "mass 1 1.0", "pair_style morse/spline cut 1.2", "pair_coeff 1 1 1.0 4.0 1.0",
+            "pair_modify shift yes", "neighbor 0.2 bin", "neigh_modify every 1 delay 0",
+            "group piston id 1", "group chain subtract all piston",
+            f"velocity piston set {u} 0 0", f"fix move piston move linear {u} 0 0 units box",
+            "fix nve chain nve", "fix damp all viscous/relative J 20", f"timestep {dt}",
+            "thermo_style custom step pe ke", "thermo_modify norm no", "run 0 post no"])
+        e0 = lmp.get_thermo("pe") + lmp.get_thermo("ke")
+        f_prev, work = lmp.extract_atom("f")[0][0], 0.0
+        for _ in range(1500):
+            lmp.command("run 1 pre no post no")
+            f_now = lmp.extract_atom("f")[0][0]
+            work -= 0.5 * (f_prev + f_now) * u * dt  # force on the chain = -force on piston
+            f_prev = f_now
+        e1 = lmp.get_thermo("pe") + lmp.get_thermo("ke")
+        removed = lmp.extract_fix("damp", 0, 0)
+    assert work > 0 and removed > 0
+    assert abs(e0 + work - e1 - removed) <= 2e-3 * work, (e0 + work, e1 + removed)
+
+
+def test_fix_modify_energy_adds_removed_energy_to_pe():
+    with session() as lmp:
+        thermal_morse(lmp, "fix damp all viscous/relative gamma 1.0")
+        lmp.command("run 100 post no")
+        pe_plain = lmp.get_thermo("pe")
+        lmp.commands_list(["fix_modify damp energy yes", "run 0 post no"])
+        assert lmp.get_thermo("pe") == pytest.approx(pe_plain + lmp.extract_fix("damp", 0, 0),
+                                                     rel=1e-12)
+
+
+def test_removed_energy_survives_restart(tmp_path):
+    restart = tmp_path / "restart.bin"
+    with session() as lmp:
+        thermal_morse(lmp, "fix damp all viscous/relative gamma 1.0")
+        lmp.commands_list(["run 100 post no", f"write_restart {restart}"])
+        removed = lmp.extract_fix("damp", 0, 0)
+    with session() as lmp:
+        lmp.commands_list([f"read_restart {restart}", "fix nve all nve",
+                           "fix damp all viscous/relative gamma 1.0", "run 0 post no"])
+        assert lmp.extract_fix("damp", 0, 0) == removed > 0
+
+
+@pytest.mark.parametrize("nprocs", [2, 4])
+def test_mpi_equals_serial(tmp_path, nprocs):
+    script = "\n".join([
+        f"plugin load {PLUGIN}", "units lj", "lattice fcc 1.4142135623730951",
+        "region box block 0 5 0 5 0 5", "create_box 1 box", "create_atoms 1 box", "mass 1 1.0",
+        "reset_atoms id sort yes", "displace_atoms all random 0.05 0.05 0.05 4711",
+        "velocity all create 0.3 1 loop geom", "pair_style morse/spline cut 1.3",
+        "pair_coeff * * 1.0 6.0 1.0", "neighbor 0.3 bin", "fix nve all nve",
+        "fix damp all viscous/relative J 5 mode normal", "fix_modify damp virial yes",
+        "variable px equal vcm(all,x)", "timestep 0.002",
+        "thermo_style custom step pe ke press f_damp v_px",
+        "thermo_modify format float %.15g", "run 300"])
+    cols = ["PotEng", "KinEng", "Press", "f_damp"]
+    serial = last_thermo(run_lmp(tmp_path, script), cols)
+    parallel = last_thermo(run_lmp(tmp_path, script, nprocs), cols)
+    assert serial[3] > 0
+    assert parallel == pytest.approx(serial, rel=1e-9)
+
+
+def test_warns_when_unstable_and_strong_damping_below_bound_is_stable(tmp_path):
+    base = "\n".join([
+        f"plugin load {PLUGIN}", "units lj", "lattice fcc 1.4142135623730951",
+        "region box block 0 4 0 4 0 4", "create_box 1 box", "create_atoms 1 box", "mass 1 1.0",
+        "velocity all create 0.3 1 loop geom", "pair_style morse/spline cut 1.3",
+        "pair_coeff * * 1.0 6.0 1.0", "neighbor 0.3 bin", "fix nve all nve",
+        "fix damp all viscous/relative J 1", "thermo_style custom step pe ke f_damp",
+        "thermo_modify format float %.15g"])
+    # omega0 = sqrt(C/m) = sqrt(72) = 8.49; J = 1: G = 8.49; 12 bonds: stable for dt < 0.0098
+    out = run_lmp(tmp_path, base + "\ntimestep 0.02\nrun 0\n")
+    assert "damping is unstable" in out and "time step below 0.0098" in out
+    out = run_lmp(tmp_path, base + "\ntimestep 0.005\nrun 2000\n")
+    assert "damping is unstable" not in out
+    pe, ke, removed = last_thermo(out, ["PotEng", "KinEng", "f_damp"])
+    assert all(map(math.isfinite, (pe, ke, removed))) and ke < 1e-6 and removed > 0
+
+
+BAD = [
+    ("gamma", "expected fix ID group viscous/relative"),
+    ("gamma 0", "gamma must be > 0"),
+    ("J -2", "J must be > 0"),
+    ("beta 1", "unknown style 'beta'"),
+    ("gamma 1 mode tangential", "unknown mode 'tangential'"),
+    ("gamma 1 weight gauss", "unknown weight 'gauss'"),
+    ("gamma 1 cutoff 0", "cutoff must be > 0"),
+    ("gamma 1 mode", "keyword mode needs a value"),
+    ("gamma 1 scale 2", "unknown keyword 'scale'"),
+]
+
+
+@pytest.mark.parametrize("args,message", BAD)
+def test_bad_arguments(args, message):
+    with session() as lmp:
+        lmp.commands_list(["units lj", "region box block 0 4 0 4 0 4", "create_box 1 box"])
+        with pytest.raises(Exception, match=message):
+            lmp.command(f"fix damp all viscous/relative {args}")
+
+
+def test_j_needs_a_pair_style_with_stiffness_and_cutoff_within_ghost_range():
+    with session() as lmp:
+        fcc_block(lmp)
+        lmp.commands_list(["pair_style morse 1.3", "pair_coeff * * 1.0 6.0 1.0",
+                           "fix damp all viscous/relative J 10"])
+        with pytest.raises(Exception, match="needs a pair style that provides the bond stiffness"):
+            lmp.command("run 0")
+        lmp.command("unfix damp")
+        lmp.command("fix damp all viscous/relative gamma 1 cutoff 3.0")
+        with pytest.raises(Exception, match="exceeds the ghost atom range"):
+            lmp.command("run 0")
