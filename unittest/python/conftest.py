@@ -71,17 +71,20 @@ def last_thermo(stdout, columns):
     return [row[c] for c in columns]
 
 
-def fcc_block(lmp, n=4, a=1.0, noise=0.03, temp=0.05, seed=4711, ntypes=1):
+def fcc_block(lmp, n=4, a=1.0, noise=0.03, temp=0.05, seed=4711, ntypes=1, rmass=False):
     """Periodic fcc block with nearest-neighbour distance a, IDs independent of the
     decomposition, random displacements and velocities (units lj, mass of type t = t;
-    with ntypes 2 half of the atoms, at random, are type 2)."""
+    with ntypes 2 half of the atoms, at random, are type 2).  rmass: per-atom masses
+    (for atom styles that have them), set to the same values."""
+    mass = "set type * mass 1.0" if rmass else "mass * 1.0"
     lmp.commands_list([
         "units lj", f"lattice fcc {a * 2 ** 0.5}", f"region box block 0 {n} 0 {n} 0 {n}",
-        f"create_box {ntypes} box", "create_atoms 1 box", "mass * 1.0", "reset_atoms id sort yes",
+        f"create_box {ntypes} box", "create_atoms 1 box", mass, "reset_atoms id sort yes",
         f"displace_atoms all random {noise} {noise} {noise} {seed}",
         f"velocity all create {temp} {seed + 1} loop geom", "neighbor 0.3 bin"])
     if ntypes == 2:
-        lmp.commands_list([f"set type 1 type/fraction 2 0.5 {seed + 2}", "mass 2 2.0"])
+        lmp.commands_list([f"set type 1 type/fraction 2 0.5 {seed + 2}",
+                           "set type 2 mass 2.0" if rmass else "mass 2 2.0"])
 
 
 def state(lmp):

@@ -294,3 +294,33 @@ def test_j_needs_a_pair_style_with_stiffness_and_cutoff_within_ghost_range():
         lmp.command("fix damp all viscous/relative gamma 1 cutoff 3.0")
         with pytest.raises(Exception, match="exceeds the ghost atom range"):
             lmp.command("run 0")
+
+
+def test_per_atom_masses_conserve_momentum_and_match_type_masses():
+    """atom_style with per-atom masses (rmass): the same masses as per-type masses give the
+    same forces (the m_ij path per pair), and the momentum is conserved."""
+    forces = []
+    for style in ("atomic", "sphere"):
+        with session() as lmp:
+            lmp.command(f"atom_style {style}")
+            fcc_block(lmp, noise=0.05, temp=0.3, ntypes=2, rmass=style == "sphere")
+            lmp.commands_list(["pair_style zero 1.3", "pair_coeff * *",
+                               "fix damp all viscous/relative gamma 3.0 mode normal",
+                               "run 0 post no"])
+            forces.append(arrays(lmp, "f"))
+    assert np.max(np.abs(forces[0])) > 0
+    assert np.max(np.abs(forces[0] - forces[1])) <= 1e-13 * np.max(np.abs(forces[0]))
+    assert np.max(np.abs(forces[1].sum(axis=0))) <= 1e-12 * np.max(np.abs(forces[1]))
+
+
+def test_only_pairs_inside_the_group_are_damped():
+    with session() as lmp:
+        fcc_block(lmp, noise=0.05, temp=0.3)
+        lmp.commands_list(["region half block 0 2 INF INF INF INF", "group half region half",
+                           "pair_style zero 1.3", "pair_coeff * *",
+                           "fix damp half viscous/relative gamma 3.0", "run 0 post no"])
+        f = arrays(lmp, "f")
+        inside = np.array(lmp.gather_atoms("mask", 0, 1)) & 2 > 0  # bit of group "half"
+    assert np.any(inside) and np.any(~inside)
+    assert np.all(f[~inside] == 0.0) and np.max(np.abs(f[inside])) > 0
+    assert np.max(np.abs(f[inside].sum(axis=0))) <= 1e-12 * np.max(np.abs(f))
