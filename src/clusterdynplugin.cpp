@@ -6,6 +6,7 @@
 #include "lammpsplugin.h"
 #include "version.h"
 
+#include "compute_pair_params.h"
 #include "fix_viscous_relative.h"
 #include "pair_spline.h"
 #include "pair_spline_omp.h"
@@ -49,6 +50,11 @@ Fix *create_fix_viscous_relative(LAMMPS *lmp, int narg, char **arg)
   return new FixViscousRelative(lmp, narg, arg);
 }
 
+Compute *create_compute_pair_params(LAMMPS *lmp, int narg, char **arg)
+{
+  return new ComputePairParams(lmp, narg, arg);
+}
+
 }    // namespace
 
 extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
@@ -67,5 +73,11 @@ extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
   plugin.author = "cluster-dynamics plugin developers";
   plugin.creator.v2 = (lammpsplugin_factory2 *) &create_fix_viscous_relative;
   plugin.handle = handle;
+  (*register_plugin)(&plugin, lmp);
+
+  plugin.style = "compute";
+  plugin.name = "pair/params";
+  plugin.info = "characteristic parameters of a pair law";
+  plugin.creator.v2 = (lammpsplugin_factory2 *) &create_compute_pair_params;
   (*register_plugin)(&plugin, lmp);
 }

@@ -348,8 +348,8 @@ template <class Law> double PairSpline<Law>::init_one(int i, int j)
   for (auto *v : {d0, a0, p0, q0, kappa, rc_pair, rs_pair}) v[j][i] = v[i][j];
   const SplineCoeff &c = pair_coeff(i, j);
   double d[4];
-  Law::derivs(c, c.a, d);
-  stiffness[i][j] = stiffness[j][i] = c.kappa * c.kappa * d[2];
+  law_derivs(i, j, c.a, d, false);
+  stiffness[i][j] = stiffness[j][i] = d[2];
   cut[i][j] = cut[j][i] = c.rc;
   return cut[i][j];
 }
@@ -442,38 +442,69 @@ template <class Law> void PairSpline<Law>::write_data_all(FILE *fp)
 }
 
 /* ----------------------------------------------------------------------
-   the full law (kappa, tail, shift) and its first two derivatives at r
+   Pi, Pi', Pi'', Pi''' at r: the full law (kappa, tail, shift) or the base
 ------------------------------------------------------------------------- */
 
 template <class Law>
-double PairSpline<Law>::law(int itype, int jtype, double r, double &d1, double &d2) const
+void PairSpline<Law>::law_derivs(int itype, int jtype, double r, double *d, bool with_tail) const
 {
   const SplineCoeff &c = pair_coeff(itype, jtype);
-  d1 = d2 = 0.0;
-  if (r >= c.rc) return 0.0;
-  if (tail == WAGNER && r * r >= c.bsq) {
+  if (with_tail && r >= c.rc) {
+    d[0] = d[1] = d[2] = d[3] = 0.0;
+    return;
+  }
+  if (with_tail && tail == WAGNER && r * r >= c.bsq) {
     const double w = c.acsq - r * r;
     const double g = w * (3.0 * c.wa3 * w - 2.0 * c.wa2);    // dPi/dw
-    d1 = -2.0 * r * g;
-    d2 = -2.0 * g + 4.0 * r * r * (6.0 * c.wa3 * w - 2.0 * c.wa2);
-    return w * w * (c.wa3 * w - c.wa2);
+    const double g1 = 6.0 * c.wa3 * w - 2.0 * c.wa2;           // d2Pi/dw2
+    d[0] = w * w * (c.wa3 * w - c.wa2);
+    d[1] = -2.0 * r * g;
+    d[2] = -2.0 * g + 4.0 * r * r * g1;
+    d[3] = 12.0 * r * g1 - 48.0 * c.wa3 * r * r * r;
+    return;
   }
-  double d[4];
-  Law::derivs(c, c.kappa * (r - c.a) + c.a, d);
-  double pi = d[0];
-  d1 = c.kappa * d[1];
-  d2 = c.kappa * c.kappa * d[2];
+  double base[4];
+  Law::derivs(c, c.kappa * (r - c.a) + c.a, base);
+  const double k = c.kappa;
+  d[0] = base[0];
+  d[1] = k * base[1];
+  d[2] = k * k * base[2];
+  d[3] = k * k * k * base[3];
+  if (!with_tail) return;
   if (tail == LAGUNOV && r >= c.rs) {
+    const double l = c.inv_l2;
     const double x = r - c.rs;
-    const double m = 1.0 - x * x * c.inv_l2;
-    const double k0 = m * m;
-    const double k1 = -4.0 * x * m * c.inv_l2;
-    const double k2 = -4.0 * c.inv_l2 * (m - 2.0 * x * x * c.inv_l2);
-    d2 = d2 * k0 + 2.0 * d1 * k1 + pi * k2;
-    d1 = d1 * k0 + pi * k1;
-    pi *= k0;
+    const double m = 1.0 - x * x * l;
+    const double k0 = m * m, k1 = -4.0 * x * m * l, k2 = -4.0 * l * (m - 2.0 * x * x * l);
+    const double k3 = 24.0 * x * l * l;
+    d[3] = d[3] * k0 + 3.0 * d[2] * k1 + 3.0 * d[1] * k2 + d[0] * k3;
+    d[2] = d[2] * k0 + 2.0 * d[1] * k1 + d[0] * k2;
+    d[1] = d[1] * k0 + d[0] * k1;
+    d[0] *= k0;
   }
-  return pi - c.offset;
+  d[0] -= c.offset;
+}
+
+template <class Law> double PairSpline<Law>::law_b(int itype, int jtype) const
+{
+  if (!Law::has_inflection && tail != LAGUNOV) return 0.0;
+  const SplineCoeff &c = pair_coeff(itype, jtype);
+  const double b = Law::has_inflection ? c.a + (Law::inflection(c) - c.a) / c.kappa : 0.0;
+  if (tail != LAGUNOV || (b > 0.0 && c.rs >= b)) return b;
+
+  // the smoothing starts before b: the first zero of Pi'' of the smoothed law in (Rs, Rc)
+  double lo = MAX(c.a, c.rs), hi = c.rc, d[4];
+  law_derivs(itype, jtype, lo, d, true);
+  if (d[2] <= 0.0) return lo;
+  law_derivs(itype, jtype, hi * (1.0 - 1e-12), d, true);
+  if (d[2] > 0.0) return 0.0;
+  while (hi - lo > 1e-15 * hi) {
+    const double mid = 0.5 * (lo + hi);
+    law_derivs(itype, jtype, mid, d, true);
+    if (d[2] > 0.0) lo = mid;
+    else hi = mid;
+  }
+  return 0.5 * (lo + hi);
 }
 
 template <class Law>
@@ -496,9 +527,10 @@ template <class Law>
 void PairSpline<Law>::born_matrix(int, int, int itype, int jtype, double rsq, double,
                                   double factor_lj, double &dupair, double &du2pair)
 {
-  law(itype, jtype, sqrt(rsq), dupair, du2pair);
-  dupair *= factor_lj;
-  du2pair *= factor_lj;
+  double d[4];
+  law_derivs(itype, jtype, sqrt(rsq), d, true);
+  dupair = factor_lj * d[1];
+  du2pair = factor_lj * d[2];
 }
 
 /* ---------------------------------------------------------------------- */

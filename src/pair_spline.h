@@ -13,6 +13,7 @@
 
 #include "atom.h"
 #include "force.h"
+#include "law_source.h"
 #include "pair.h"
 #include "spline_laws.h"
 
@@ -50,7 +51,7 @@ namespace ClusterDyn {
     return Law::template eval<KAPPA>(c, rsq, fpair);
   }
 
-  template <class Law> class PairSpline : public Pair {
+  template <class Law> class PairSpline : public Pair, public LawSource {
    public:
     PairSpline(class LAMMPS *);
     ~PairSpline() override;
@@ -71,8 +72,9 @@ namespace ClusterDyn {
     void *extract(const char *, int &) override;
     double memory_usage() override;
 
-    // Pi(r), Pi'(r), Pi''(r) of the full law (kappa and tail) for one type pair
-    double law(int itype, int jtype, double r, double &d1, double &d2) const;
+    void law_derivs(int i, int j, double r, double *d, bool tail) const override;
+    double law_a(int i, int j) const override { return pair_coeff(i, j).a; }
+    double law_b(int i, int j) const override;
 
    protected:
     int tail;                   // Tail

@@ -1,0 +1,230 @@
+"""compute pair/params against the spec's closed forms (section 4) on the analytic path
+(this package's styles) and the numeric path (stock styles through single()), the shock
+table against an independent solution of the c(u) equation (section 5), bad input."""
+import math
+
+import numpy as np
+import pytest
+from conftest import session
+from spec_laws import Law
+
+NAMES = ["a", "b", "sigma", "D", "fstar", "C", "eps", "kstar", "kv", "k2", "Gamma", "omega0",
+         "T0", "v0", "vd", "Bstar", "Rc", "ucr", "ucr1d", "vl"]
+
+
+def closed_form(law, m=1.0):
+    """The spec's closed forms and definitions, from spec_laws (independent of the plugin)."""
+    a, D, k = law.a, law.D, law.kappa
+    if law.base == "morse":
+        c, gamma = 2 * law.alpha ** 2 * D, 1.5 * law.alpha * a
+        k2 = math.exp(law.alpha * k * a) / (2 - math.exp(-law.alpha * k * a))
+    elif law.base == "harmonic":
+        c, gamma, k2 = 2 * law.alpha ** 2 * D, 0.0, None
+    else:
+        n, mm = (12.0, 6.0) if law.base == "lj" else (law.n, law.m)
+        c, gamma = n * mm * D / a ** 2, (n + mm + 3) / 2
+        k2 = (n - mm) / (n * 2 ** -mm - mm * 2 ** -n) if k == 1 else None
+    c *= k * k
+    gamma *= k
+    b = law.b()
+    fstar = abs(law.f(b)) if b else None
+    v = {"a": a, "D": D, "C": c, "kv": a * math.sqrt(c / (2 * D)), "Gamma": gamma,
+         "omega0": math.sqrt(c / m), "v0": a * math.sqrt(c / m), "vd": math.sqrt(2 * D / m),
+         "Bstar": 2 * math.sqrt(m * c)}
+    if b:
+        v.update(b=b, fstar=fstar, eps=b / a - 1, kstar=c * (b - a) / fstar)
+    if k2:
+        v["k2"] = k2
+    return v
+
+
+def params(pair_style, pair_coeff, extra="", mass=1.0, commands=()):
+    with session() as lmp:
+        lmp.commands_list(["units lj", "region box block 0 6 0 6 0 6", "create_box 1 box",
+                           f"mass 1 {mass}", f"pair_style {pair_style}", f"pair_coeff 1 1 {pair_coeff}",
+                           *commands, f"compute p all pair/params 1 1 {extra}",
+                           "thermo_style custom step c_p[1]", "run 0 post no"])
+        vec = dict(zip(NAMES, lmp.numpy.extract_compute("p", 0, 1)[:20].copy()))
+        rows = int(extra.count(" ") and "u " in extra and len(extra.split("u ")[1].split()))
+        arr = lmp.numpy.extract_compute("p", 0, 2).copy() if rows else None
+    return vec, arr
+
+
+def check(values, expected, rel, gamma_rel):
+    for key, want in expected.items():
+        tol = gamma_rel if key == "Gamma" else rel
+        got = values[key]
+        assert abs(got - want) <= tol * max(abs(want), 1e-300) + (1e-12 if want == 0 else 0), \
+            (key, got, want)
+
+
+ANALYTIC = [  # law, pair_style tail, mass
+    (Law("lj", 1.0, 1.0), "cut 2.5", 1.0),
+    (Law("lj", 1.3, 1.2), "wagner", 2.0),
+    (Law("lj", 1.0, 1.0), "lagunov 1.6", 1.0),
+    (Law("lj", 1.0, 1.0, kappa=0.5), "cut 2.5", 1.0),
+    (Law("mie", 1.0, 1.0, n=9, m=6), "cut 2.5", 1.0),
+    (Law("mie", 2.0, 1.0, n=20, m=7), "lagunov 1.5", 1.0),
+    (Law("mie", 1.0, 1.0, n=8, m=4, kappa=1.3), "wagner", 1.0),
+    (Law("morse", 1.0, 1.0, alpha=6.0), "cut 2.5", 1.0),
+    (Law("morse", 2.46e-6, 1e-5, alpha=3.76e5), "cut 1.2", 2.338e-12),
+    (Law("morse", 1.0, 1.0, alpha=3.0), "wagner", 1.0),
+    (Law("morse", 1.0, 1.0, alpha=4.0, kappa=1.5), "lagunov 1.5", 1.0),
+    (Law("harmonic", 1.0, 1.0, alpha=5.0), "cut 1.3", 1.0),
+]
+
+
+@pytest.mark.parametrize("law,tail,mass", ANALYTIC,
+                         ids=[f"{l.base}-{t.split()[0]}-k{l.kappa}" for l, t, _ in ANALYTIC])
+def test_analytic_path_equals_closed_forms(law, tail, mass):
+    values, _ = params(f"{law.style()} {tail}", law.coeff(), mass=mass)
+    expected = closed_form(law, mass)
+    if "k2" in expected and (tail != "cut 2.5"):
+        del expected["k2"]  # the tail ends before 2a
+    check(values, expected, 1e-9, 1e-9)
+    if law.base == "harmonic":
+        assert math.isnan(values["b"])
+    if tail != "cut 2.5":
+        assert values["k2"] == math.inf
+
+
+NUMERIC = [  # stock style, coeff, the same law
+    ("morse 2.5", "1.0 6.0 1.0", Law("morse", 1.0, 1.0, alpha=6.0)),
+    ("morse 2.5", "1.0 3.76 1.0", Law("morse", 1.0, 1.0, alpha=3.76)),
+    ("lj/cut 2.5", f"1.0 {2 ** (-1 / 6)!r}", Law("lj", 1.0, 1.0)),
+    ("mie/cut 2.5", f"1.0 {(6 / 9) ** (1 / 3)!r} 9 6", Law("mie", 1.0, 1.0, n=9, m=6)),
+    ("mie/cut 2.5", f"1.0 {(7 / 20) ** (1 / 13)!r} 20 7", Law("mie", 1.0, 1.0, n=20, m=7)),
+]
+
+
+@pytest.mark.parametrize("pair_style,coeff,law", NUMERIC, ids=[n[0] + n[1] for n in NUMERIC])
+def test_numeric_path_with_stock_styles(pair_style, coeff, law):
+    values, _ = params(pair_style, coeff)
+    check(values, closed_form(law), 1e-7, 1e-5)
+
+
+@pytest.mark.parametrize("law,tail", [(Law("lj", 1.0, 1.0, kappa=0.7), ("wagner",)),
+                                      (Law("morse", 1.0, 1.0, alpha=5.0, kappa=1.2),
+                                       ("lagunov", 1.6, 1.3))])
+def test_numeric_path_with_lepton_tails(law, tail):
+    """pair_style lepton with the spec's expression: a law no stock style has.  (A Lagunov
+    smoothing that starts at b moves the strongest attraction beyond b, so the numeric
+    path, which finds b there, is tested with a start beyond b.)"""
+    expr, cutoff = law.lepton(*tail)
+    values, _ = params(f"lepton {cutoff!r}", f'"{expr}"')
+    expected = closed_form(law)
+    expected.pop("k2", None)
+    check(values, expected, 1e-7, 1e-5)
+
+
+def test_table_style_within_its_interpolation_error(tmp_path):
+    table = tmp_path / "morse.table"
+    law = Law("morse", 1.0, 1.0, alpha=6.0)
+    with session() as lmp:
+        lmp.commands_list(["units lj", "region box block 0 6 0 6 0 6", "create_box 1 box",
+                           "mass 1 1.0", "pair_style morse/spline cut 2.5",
+                           f"pair_coeff 1 1 {law.coeff()}",
+                           f"pair_write 1 1 20000 r 0.1 2.5 {table} MORSE"])
+    values, _ = params("table spline 20000", f"{table} MORSE 2.5")
+    check(values, {k: v for k, v in closed_form(law).items() if k != "Gamma"}, 1e-5, 1e-3)
+    assert values["Gamma"] == pytest.approx(9.0, rel=1e-3)
+
+
+def test_cutoff_before_inflection_point():
+    """Al clusters, Rc = 1.1 < b = 1.184: analytic b from the law; stock morse: NaN, warned."""
+    law = Law("morse", 1.0, 1.0, alpha=3.76)
+    ours, _ = params("morse/spline cut 1.1", law.coeff())
+    check(ours, {k: v for k, v in closed_form(law).items() if k != "k2"}, 1e-9, 1e-9)
+    stock, _ = params("morse 1.1", "1.0 3.76 1.0")
+    assert math.isnan(stock["b"]) and math.isnan(stock["kstar"])
+    assert stock["C"] == pytest.approx(ours["C"], rel=1e-7)
+
+
+def test_dusting_criteria_and_lattice_speed():
+    law = Law("morse", 2.46e-6, 1e-5, alpha=3.76e5)
+    m = 2.338e-12
+    values, _ = params(f"{law.style()} cut 1.2", law.coeff(), "lattice fcc", mass=m)
+    c0 = 3.76 * math.sqrt(2 * 2.46e-6 / m)
+    assert values["v0"] == pytest.approx(c0, rel=1e-12)
+    assert values["v0"] == pytest.approx(5454, abs=1)  # the paper's c0
+    assert values["vd"] == pytest.approx(1451, abs=1)
+    assert values["Rc"] == pytest.approx(1.2, rel=1e-12)
+    assert values["ucr"] == pytest.approx(1.35 * 0.2 * c0, rel=1e-12)
+    assert values["ucr1d"] == pytest.approx(0.2 * c0 / (2 * math.sqrt(2)), rel=1e-12)
+    assert values["vl"] == pytest.approx(1.10 * c0, rel=1e-12)
+    assert values["T0"] == pytest.approx(2 * math.pi / values["omega0"], rel=1e-14)
+    other, _ = params(f"{law.style()} cut 1.2", law.coeff(), "rc 1.3 mass 1e-12", mass=m)
+    assert other["Rc"] == 1.3 and other["vd"] == pytest.approx(math.sqrt(2 * 2.46e-6 / 1e-12))
+
+
+def solve_y(law, u, c0):
+    """y + (u/c0)/sqrt(Pi''(ya)/Pi''(a)) = 1 by bisection, Pi'' from the spec's force."""
+    def pi2(r, h=1e-6):
+        return -(law.f(r + h * law.a) - law.f(r - h * law.a)) / (2 * h * law.a)
+    c = pi2(law.a)
+    g = lambda y: y + (u / c0) / math.sqrt(pi2(y * law.a) / c) - 1
+    lo, hi = 0.2, 1.0
+    for _ in range(100):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if g(mid) < 0 else (lo, mid)
+    return 0.5 * (lo + hi)
+
+
+@pytest.mark.parametrize("style", ["morse/spline cut 1.2", "morse 1.2e-5"])
+def test_shock_table_solves_the_c_of_u_equation(style):
+    law = Law("morse", 2.46e-6, 1e-5, alpha=3.76e5)
+    m, speeds = 2.338e-12, [1000.0, 4000.0, 10000.0]
+    coeff = law.coeff() if "spline" in style else "2.46e-6 3.76e5 1e-5 1.2e-5"
+    values, table = params(style, coeff, "u " + " ".join(map(str, speeds)), mass=m)
+    c0 = values["v0"]
+    for row, u in zip(table, speeds):
+        y = solve_y(law, u, c0)
+        assert row[0] == u
+        assert row[1] == pytest.approx(y, rel=1e-7)
+        assert row[3] == pytest.approx(u / (1 - y), rel=1e-6)  # y = (c - u)/c
+        assert row[2] * c0 == pytest.approx(row[3], rel=1e-12)
+        assert row[4] == pytest.approx(math.pi * law.a / row[3], rel=1e-12)
+        assert row[5] == pytest.approx(row[4] / 20, rel=1e-12)
+    assert table[1][1] == pytest.approx(0.76, abs=0.005)  # the spec: u = 4 km/s gives y = 0.76
+
+
+def test_harmonic_shock_table_is_linear():
+    values, table = params("harmonic/spline cut 1.2", "1.0 5.0 1.0 ", "u 0.5 2.0")
+    c0 = values["v0"]
+    assert table[0][1] == pytest.approx(1 - 0.5 / c0, rel=1e-12)
+    assert table[0][2] == pytest.approx(1.0, rel=1e-12)
+
+
+BAD = [
+    ("pair/params 1", "expected compute ID group pair/params I J"),
+    ("pair/params 1 3", "atom type 3 is out of range 1-1"),
+    ("pair/params 0 1", "atom type 0 is out of range"),
+    ("pair/params 1 1 lattice hcp", "unknown lattice 'hcp'"),
+    ("pair/params 1 1 u -5", "loading speed u must be > 0"),
+    ("pair/params 1 1 u", "keyword u needs speeds"),
+    ("pair/params 1 1 mass 0", "mass must be > 0"),
+    ("pair/params 1 1 rc -1", "rc must be > 0"),
+    ("pair/params 1 1 speed 3", "unknown keyword 'speed'"),
+]
+
+
+@pytest.mark.parametrize("args,message", BAD)
+def test_bad_arguments(args, message):
+    with session() as lmp:
+        lmp.commands_list(["units lj", "region box block 0 6 0 6 0 6", "create_box 1 box"])
+        with pytest.raises(Exception, match=message):
+            lmp.command(f"compute p all {args}")
+
+
+@pytest.mark.parametrize("pair,message", [
+    ("pair_style zero 2.0\npair_coeff * *", "no minimum of the law"),
+    ("pair_style soft 2.0\npair_coeff * * 1.0", "no minimum of the law"),
+    ("pair_style none", "needs a pair style"),
+])
+def test_laws_without_parameters(pair, message):
+    with session() as lmp:
+        lmp.commands_list(["units lj", "region box block 0 6 0 6 0 6", "create_box 1 box",
+                           "mass 1 1.0", *pair.split("\n"), "compute p all pair/params 1 1",
+                           "thermo_style custom step c_p[1]"])
+        with pytest.raises(Exception, match=message):
+            lmp.command("run 0")

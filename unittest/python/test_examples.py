@@ -1,0 +1,56 @@
+"""The examples run as documented (lmp -in ..., plugin auto-loaded from LAMMPS_PLUGIN_PATH)
+and print what the papers and the closed forms say."""
+import os
+import re
+import subprocess
+
+import pytest
+from conftest import LMP, PLUGIN
+
+EXAMPLES = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..", "examples"))
+
+
+def run_example(name, script, *var):
+    env = dict(os.environ, LAMMPS_PLUGIN_PATH=os.path.dirname(PLUGIN))
+    cmd = [LMP, "-in", script, "-log", "none", "-nocite"]
+    for k, v in var:
+        cmd += ["-var", k, str(v)]
+    out = subprocess.run(cmd, cwd=os.path.join(EXAMPLES, name), env=env, capture_output=True,
+                         text=True, timeout=300)
+    assert out.returncode == 0, out.stdout[-2000:] + out.stderr[-2000:]
+    return out.stdout
+
+
+def chain(u, damp):
+    out = run_example("shock-chain", "in.shock-chain", ("u", u), ("damp", damp))
+    surface = int(re.search(r"torn off the free surface: (\d+)", out).group(1))
+    vfree = float(re.search(r"free-surface speed: ([-\d.]+)", out).group(1))
+    removed = float(re.search(r"energy removed by fix viscous/relative: ([-\d.e+]+)", out).group(1))
+    return surface, vfree, removed
+
+
+def test_chain_morse_4000_tears_off_at_least_ten_surface_clusters():
+    assert chain(4000, "none")[0] >= 10  # paper: at least the last ten
+
+
+def test_chain_2000_relative_damping_removes_surface_dust_absolute_slows_the_flight():
+    none, relative, absolute = chain(2000, "none"), chain(2000, "relative"), chain(2000, "absolute")
+    assert none[0] > 0 and none[2] == 0
+    assert relative[0] == 0 and relative[2] > 0
+    assert relative[1] == pytest.approx(2 * 2000, rel=0.05)  # velocity doubling (paper: ~2u)
+    assert absolute[0] == 0 and absolute[1] < 0.6 * 2 * 2000  # fix viscous slows the flight
+
+
+def test_chain_below_the_1d_onset_has_no_dust():
+    assert chain(300, "none")[0] == 0  # u_cr,1D = 386 m/s for Rc = 1.2
+
+
+def test_params_table_matches_closed_forms():
+    out = run_example("params", "in.params")
+    rows = {m.group(1).strip(): [float(x) for x in m.group(2).split("|")[:-1]]
+            for m in re.finditer(r"^\| ([^|]+) \|((?: [-\d.e+]+ \|)+)$", out, re.M)}
+    lj = rows["LJ"]
+    assert lj[:5] == pytest.approx([0.1087, 2.909, 6.0, 32.25, 10.5], rel=2e-4)
+    assert rows["Morse, alpha a = 6"][4] == pytest.approx(9.0, rel=1e-6)
+    assert rows["4000"][0] == pytest.approx(0.76, abs=0.005)  # spec: y = 0.76 at 4 km/s
+    assert "c0 = 5454 m/s, vd = 1451 m/s" in out
