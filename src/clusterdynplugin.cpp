@@ -6,6 +6,7 @@
 #include "lammpsplugin.h"
 #include "version.h"
 
+#include "compute_dust.h"
 #include "compute_pair_params.h"
 #include "fix_viscous_relative.h"
 #include "pair_spline.h"
@@ -50,6 +51,11 @@ Fix *create_fix_viscous_relative(LAMMPS *lmp, int narg, char **arg)
   return new FixViscousRelative(lmp, narg, arg);
 }
 
+Compute *create_compute_dust(LAMMPS *lmp, int narg, char **arg)
+{
+  return new ComputeDust(lmp, narg, arg);
+}
+
 Compute *create_compute_pair_params(LAMMPS *lmp, int narg, char **arg)
 {
   return new ComputePairParams(lmp, narg, arg);
@@ -79,5 +85,10 @@ extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
   plugin.name = "pair/params";
   plugin.info = "characteristic parameters of a pair law";
   plugin.creator.v2 = (lammpsplugin_factory2 *) &create_compute_pair_params;
+  (*register_plugin)(&plugin, lmp);
+
+  plugin.name = "dust";
+  plugin.info = "fragments of the bond graph and the dust";
+  plugin.creator.v2 = (lammpsplugin_factory2 *) &create_compute_dust;
   (*register_plugin)(&plugin, lmp);
 }

@@ -18,6 +18,7 @@ LMP = os.environ["CLUSTERDYN_LMP"]
 PAIR_STYLES = [s + v for s in ("morse/spline", "lj/spline", "mie/spline", "harmonic/spline")
                for v in ("", "/omp")]
 FIX_STYLES = ["viscous/relative"]
+COMPUTE_STYLES = ["dust", "pair/params"]
 
 
 def load_plugin(lmp, path=PLUGIN):
@@ -27,6 +28,7 @@ def load_plugin(lmp, path=PLUGIN):
     lmp.command(f"plugin load {path}")
     missing = [("pair", s) for s in PAIR_STYLES if not lmp.has_style("pair", s)]
     missing += [("fix", s) for s in FIX_STYLES if not lmp.has_style("fix", s)]
+    missing += [("compute", s) for s in COMPUTE_STYLES if not lmp.has_style("compute", s)]
     if missing:
         raise RuntimeError(f"plugin {path} did not register the styles {missing}")
 
@@ -71,6 +73,11 @@ def last_thermo(stdout, columns):
     return [row[c] for c in columns]
 
 
+def fcc_density(a):
+    """The reduced density that `lattice fcc` (units lj) needs for nearest neighbours at a."""
+    return 4.0 / (a * 2 ** 0.5) ** 3
+
+
 def fcc_block(lmp, n=4, a=1.0, noise=0.03, temp=0.05, seed=4711, ntypes=1, rmass=False):
     """Periodic fcc block with nearest-neighbour distance a, IDs independent of the
     decomposition, random displacements and velocities (units lj, mass of type t = t;
@@ -78,7 +85,7 @@ def fcc_block(lmp, n=4, a=1.0, noise=0.03, temp=0.05, seed=4711, ntypes=1, rmass
     (for atom styles that have them), set to the same values."""
     mass = "set type * mass 1.0" if rmass else "mass * 1.0"
     lmp.commands_list([
-        "units lj", f"lattice fcc {a * 2 ** 0.5}", f"region box block 0 {n} 0 {n} 0 {n}",
+        "units lj", f"lattice fcc {fcc_density(a)!r}", f"region box block 0 {n} 0 {n} 0 {n}",
         f"create_box {ntypes} box", "create_atoms 1 box", mass, "reset_atoms id sort yes",
         f"displace_atoms all random {noise} {noise} {noise} {seed}",
         f"velocity all create {temp} {seed + 1} loop geom", "neighbor 0.3 bin"])

@@ -1,0 +1,46 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   Cluster-dynamics plugin for LAMMPS: compute dust, the fragments of the
+   bond graph and the dust (detached fragments) (doc/compute_dust.rst).
+------------------------------------------------------------------------- */
+
+#ifndef LMP_CLUSTERDYN_COMPUTE_DUST_H
+#define LMP_CLUSTERDYN_COMPUTE_DUST_H
+
+#include "compute.h"
+
+#include <vector>
+
+namespace LAMMPS_NS {
+namespace ClusterDyn {
+
+  class ComputeDust : public Compute {
+   public:
+    ComputeDust(class LAMMPS *, int, char **);
+    ~ComputeDust() override;
+    void init() override;
+    void init_list(int, class NeighList *) override;
+    void compute_vector() override;
+    void compute_peratom() override;
+    int pack_forward_comm(int, int *, double *, int, int *) override;
+    void unpack_forward_comm(int, int, double *) override;
+    double memory_usage() override;
+
+   private:
+    double cutoff_user;        // 0: the pair style's cutoff of each type pair
+    bigint maxsize;            // 0: every fragment but the largest is dust
+    std::vector<double> cutsq; // (ntypes+1)^2 bond distance squared
+    class NeighList *list;
+    int nmax;
+    double **fragments;        // per atom: fragment ID, size, dust flag
+    std::vector<int> parent;   // union-find over my atoms and ghosts
+    std::vector<double> label; // per atom (and ghost): local fragment label
+    bigint evaluated;          // step of the last evaluation
+
+    void evaluate();
+    int find(int i);
+  };
+
+}    // namespace ClusterDyn
+}    // namespace LAMMPS_NS
+
+#endif

@@ -1,0 +1,206 @@
+"""compute dust: the fragment partition equals compute cluster/atom (random and fractured
+configurations, serial and MPI), constructed scenes with known answers, maxsize, masses,
+groups, bad input."""
+import numpy as np
+import pytest
+from conftest import PLUGIN, fcc_density, last_thermo, run_lmp, session
+
+# an fcc block stretched to nearest neighbours at 1.3 and shaken (+-0.12): bonds (< 1.25)
+# survive at random, leaving a body, fragments and loose atoms
+FRACTURED = ["units lj", "atom_modify map array", f"lattice fcc {fcc_density(1.3)!r}",
+             "region box block 0 8 0 8 0 8", "create_box 1 box", "create_atoms 1 box",
+             "mass 1 1.0", "reset_atoms id sort yes",
+             "displace_atoms all random 0.12 0.12 0.12 99 units box",
+             "pair_style morse/spline cut 1.25", "pair_coeff * * 1.0 6.0 1.0", "neighbor 0.3 bin"]
+
+VECTOR = ["dust", "dustfrag", "dustmass", "dustfrac", "body", "nfrag"]
+
+
+def evaluate(lmp, extra="", cid="d"):
+    lmp.commands_list([f"compute {cid} all dust {extra}".strip(), "run 0 post no"])
+    vec = dict(zip(VECTOR, lmp.numpy.extract_compute(cid, 0, 1)[:6].copy()))
+    per = np.array(lmp.gather(f"c_{cid}", 1, 3)).reshape(-1, 3)
+    return vec, per
+
+
+def gas(lmp, n=400, box=10.0, seed=7, mass="mass 1 1.0"):
+    lmp.commands_list(["units lj", "atom_modify map array", f"region box block 0 {box} 0 {box} 0 {box}",
+                       "create_box 1 box", f"create_atoms 1 random {n} {seed} NULL overlap 0.5", mass,
+                       "pair_style lj/cut 1.4", "pair_coeff * * 1.0 1.0", "neighbor 0.3 bin"])
+
+
+@pytest.mark.parametrize("scene", ["gas", "fractured"])
+def test_partition_equals_cluster_atom(scene):
+    with session() as lmp:
+        if scene == "gas":
+            gas(lmp)
+        else:
+            lmp.commands_list(FRACTURED)
+        lmp.commands_list(["compute ca all cluster/atom 1.4" if scene == "gas"
+                           else "compute ca all cluster/atom 1.25", "dump 1 all custom 1 /dev/null c_ca"])
+        vec, per = evaluate(lmp)
+        ca = np.array(lmp.gather("c_ca", 1, 1))
+    assert np.array_equal(per[:, 0], ca)
+    ids, sizes = np.unique(ca, return_counts=True)
+    assert vec["nfrag"] == len(ids) > 2 and vec["body"] == sizes.max()
+    assert vec["dust"] == len(ca) - sizes.max()
+    body = ids[np.argmax(sizes)]
+    assert np.array_equal(per[:, 2], (ca != body).astype(float))
+    assert np.array_equal(per[:, 1], sizes[np.searchsorted(ids, ca)].astype(float))
+
+
+def single_atoms(lmp, positions, box=(0, 10), boundary="p p p", masses=None):
+    lo, hi = box
+    lmp.commands_list(["units lj", "atom_modify map array", f"boundary {boundary}",
+                       f"region box block {lo} {hi} {lo} {hi} {lo} {hi}", "create_box 2 box",
+                       "mass 1 1.0", "mass 2 3.0", "pair_style zero 1.0", "pair_coeff * *",
+                       "neighbor 0.3 bin"])
+    for k, p in enumerate(positions):
+        t = masses[k] if masses else 1
+        lmp.command(f"create_atoms {t} single {p[0]} {p[1]} {p[2]} units box")
+
+
+def test_isolated_particles_and_dimers():
+    pos = [(1, 1, 1), (5, 5, 5), (8, 2, 2), (3, 7, 7), (3.9, 7, 7), (6, 1, 8), (6, 1.5, 8)]
+    with session() as lmp:
+        single_atoms(lmp, pos)
+        vec, per = evaluate(lmp)
+    # fragments: 3 singles, 2 dimers; the body is the first dimer (sizes tie: smallest ID)
+    assert vec["nfrag"] == 5 and vec["body"] == 2
+    assert vec["dust"] == 5 and vec["dustfrag"] == 4
+    assert list(per[:, 0]) == [1, 2, 3, 4, 4, 6, 6]
+    assert list(per[:, 1]) == [1, 1, 1, 2, 2, 2, 2]
+    assert list(per[:, 2]) == [1, 1, 1, 0, 0, 1, 1]
+
+
+def test_chain_across_the_periodic_boundary_is_one_fragment():
+    # atoms at x = 7.5 ... 9.9 and 0.3 ... 2.7 (wrapped): bonded through the boundary at 10
+    pos = [((7.5 + 0.8 * k) % 10, 5, 5) for k in range(7)] + [(5, 5, 5)]
+    with session() as lmp:
+        single_atoms(lmp, pos)
+        vec, per = evaluate(lmp)
+    assert vec["nfrag"] == 2 and vec["body"] == 7 and vec["dust"] == 1
+    assert list(per[:7, 0]) == [1] * 7 and per[7, 0] == 8 and per[7, 2] == 1
+    with session() as lmp:  # the same atoms without periodicity: two pieces of chain
+        single_atoms(lmp, pos, boundary="f f f")
+        vec, _ = evaluate(lmp)
+    assert vec["nfrag"] == 3 and vec["body"] == 4
+
+
+def test_body_with_dust_on_both_sides_maxsize_and_masses():
+    # a 4x4x4 block in the middle, a single and a dimer on the left, a trimer on the right
+    block = [(4 + i * 0.5, 4 + j * 0.5, 4 + k * 0.5) for i in range(4) for j in range(4) for k in range(4)]
+    left = [(1, 5, 5), (2.0, 5, 5), (2.6, 5, 5)]   # (1), (2.0, 2.6)
+    right = [(7.5, 5, 5), (8.2, 5, 5), (8.9, 5, 5)]
+    pos = block + left + right
+    types = [1] * 64 + [2, 2, 1, 1, 1, 2]           # type 2 has mass 3
+    with session() as lmp:
+        single_atoms(lmp, pos, masses=types)
+        vec, per = evaluate(lmp)
+        vec2, per2 = evaluate(lmp, "maxsize 2", "d2")
+    assert vec["nfrag"] == 4 and vec["body"] == 64 and vec["dust"] == 6
+    dust_mass = 3 + (3 + 1) + (1 + 1 + 3)
+    assert vec["dustmass"] == dust_mass
+    assert vec["dustfrac"] == pytest.approx(dust_mass / (64 + dust_mass), rel=1e-15)
+    assert list(per[64:, 2]) == [1] * 6
+    # maxsize 2: the trimer is not dust any more
+    assert vec2["dust"] == 3 and vec2["dustfrag"] == 2 and vec2["dustmass"] == 3 + 3 + 1
+    assert list(per2[64:, 2]) == [1, 1, 1, 0, 0, 0]
+
+
+def test_per_atom_masses():
+    with session() as lmp:
+        lmp.command("atom_style sphere")
+        single_atoms_cmds = ["units lj", "atom_modify map array", "region box block 0 10 0 10 0 10",
+                             "create_box 1 box", "create_atoms 1 single 1 1 1",
+                             "create_atoms 1 single 5 5 5", "create_atoms 1 single 5.5 5 5",
+                             "set atom 1 mass 2.5", "set atom 2 mass 1.0", "set atom 3 mass 1.5",
+                             "pair_style zero 1.0", "pair_coeff * *", "neighbor 0.3 bin"]
+        lmp.commands_list(single_atoms_cmds)
+        vec, _ = evaluate(lmp)
+    assert vec["dust"] == 1 and vec["dustmass"] == 2.5 and vec["dustfrac"] == 0.5
+
+
+def test_group_atoms_only_and_no_bonds_through_others():
+    # a chain of 5 whose middle atom is not in the group: two fragments of 2
+    pos = [(1 + 0.8 * k, 5, 5) for k in range(5)]
+    with session() as lmp:
+        single_atoms(lmp, pos)
+        lmp.commands_list(["group some id 1 2 4 5"])
+        lmp.commands_list(["compute d some dust", "run 0 post no"])
+        vec = lmp.numpy.extract_compute("d", 0, 1)[:6].copy()
+        per = np.array(lmp.gather("c_d", 1, 3)).reshape(-1, 3)
+    assert list(vec) == [2, 1, 2, 0.5, 2, 2]
+    assert list(per[:, 0]) == [1, 1, 0, 4, 4] and per[2, 1] == 0 and per[2, 2] == 0
+
+
+def test_cutoff_keyword_overrides_the_pair_cutoffs():
+    pos = [(1, 5, 5), (2.2, 5, 5), (3.4, 5, 5)]
+    with session() as lmp:
+        single_atoms(lmp, pos)  # pair zero 1.0: all apart
+        vec, _ = evaluate(lmp)
+        vec2, _ = evaluate(lmp, "cutoff 1.25", "d2")
+    assert vec["nfrag"] == 3 and vec2["nfrag"] == 1
+
+
+@pytest.mark.parametrize("nprocs", [2, 4])
+def test_mpi_equals_serial_and_cluster_atom(tmp_path, nprocs):
+    script = "\n".join([
+        f"plugin load {PLUGIN}", *FRACTURED,
+        "compute d all dust", "compute ca all cluster/atom 1.25",
+        "variable diff atom abs(c_d[1]-c_ca)", "compute maxdiff all reduce max v_diff",
+        "variable sid atom c_d[1]*c_d[3]", "compute idsum all reduce sum v_sid",
+        "thermo_style custom step c_d[1] c_d[2] c_d[5] c_d[6] c_maxdiff c_idsum",
+        "thermo_modify format float %.15g", "run 0"])
+    cols = ["c_d[1]", "c_d[2]", "c_d[5]", "c_d[6]", "c_maxdiff", "c_idsum"]
+    serial = last_thermo(run_lmp(tmp_path, script), cols)
+    parallel = last_thermo(run_lmp(tmp_path, script, nprocs), cols)
+    assert serial[3] > 10 and serial[4] == 0 and parallel[4] == 0
+    assert parallel == serial
+
+
+BAD = [
+    ("cutoff 0", "cutoff must be > 0"),
+    ("maxsize 0", "maxsize must be >= 1"),
+    ("cutoff", "keyword cutoff needs a value"),
+    ("size 3", "unknown keyword 'size'"),
+]
+
+
+@pytest.mark.parametrize("args,message", BAD)
+def test_bad_arguments(args, message):
+    with session() as lmp:
+        lmp.commands_list(["units lj", "region box block 0 6 0 6 0 6", "create_box 1 box"])
+        with pytest.raises(Exception, match=message):
+            lmp.command(f"compute d all dust {args}")
+
+
+def test_bad_setups():
+    with session() as lmp:
+        single_atoms(lmp, [(1, 1, 1)])
+        lmp.commands_list(["compute d all dust cutoff 5.0", "thermo_style custom step c_d[1]"])
+        with pytest.raises(Exception, match="exceeds the ghost atom range .* comm_modify cutoff"):
+            lmp.command("run 0")
+    with session() as lmp:
+        lmp.commands_list(["units lj", "atom_modify map array", "region box block 0 6 0 6 0 6",
+                           "create_box 1 box", "mass 1 1.0", "compute d all dust",
+                           "thermo_style custom step c_d[1]"])
+        with pytest.raises(Exception, match="needs a pair style"):
+            lmp.command("run 0")
+
+
+@pytest.mark.parametrize("nprocs", [1, 2, 4])
+def test_ring_through_processor_and_periodic_boundaries_is_one_fragment(tmp_path, nprocs):
+    """A chain along x that crosses every processor boundary and closes through the periodic
+    one, plus one loose atom: two fragments on any number of processors."""
+    lines = [f"plugin load {PLUGIN}", "units lj", "atom_modify map array", "processors * 1 1",
+             "region box block 0 36 0 4 0 4", "create_box 1 box", "mass 1 1.0",
+             "pair_style zero 1.0", "pair_coeff * *", "neighbor 0.3 bin"]
+    lines += [f"create_atoms 1 single {0.45 + 0.9 * k!r} 2 2 units box" for k in range(40)]
+    lines += ["create_atoms 1 single 18 3.5 2 units box", "compute d all dust",
+              "variable one atom c_d[1]==1", "compute inring all reduce sum v_one",
+              "thermo_style custom step c_d[5] c_d[6] c_d[1] c_inring", "thermo_modify norm no",
+              "run 0"]
+    body, nfrag, dust, inring = last_thermo(run_lmp(tmp_path, "\n".join(lines), nprocs),
+                                            ["c_d[5]", "c_d[6]", "c_d[1]", "c_inring"])
+    assert (body, nfrag, dust, inring) == (40, 2, 1, 40)
