@@ -35,6 +35,12 @@ inline const std::vector<std::string> &plugin_fix_styles()
   return styles;
 }
 
+inline const std::vector<std::string> &plugin_compute_styles()
+{
+  static const std::vector<std::string> styles = {"dust", "pair/params"};
+  return styles;
+}
+
 // load the plugin by path; throws with a clear message when it is missing or
 // does not register its styles
 inline void load_plugin(LAMMPS_NS::LAMMPS *lmp, const std::string &path)
@@ -48,6 +54,9 @@ inline void load_plugin(LAMMPS_NS::LAMMPS *lmp, const std::string &path)
   for (const auto &style : plugin_fix_styles())
     if (lmp->modify->fix_map->count(style) == 0)
       throw std::runtime_error("plugin " + path + " did not register fix style " + style);
+  for (const auto &style : plugin_compute_styles())
+    if (lmp->modify->compute_map->count(style) == 0)
+      throw std::runtime_error("plugin " + path + " did not register compute style " + style);
 }
 
 class Session {

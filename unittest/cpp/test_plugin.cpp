@@ -15,6 +15,8 @@ TEST(Plugin, LoadsByPathAndRegistersEveryStyle)
     EXPECT_EQ(s.lmp->force->pair_map->count(style), 1U) << style;
   for (const auto &style : plugin_fix_styles())
     EXPECT_EQ(s.lmp->modify->fix_map->count(style), 1U) << style;
+  for (const auto &style : plugin_compute_styles())
+    EXPECT_EQ(s.lmp->modify->compute_map->count(style), 1U) << style;
 }
 
 TEST(Plugin, MissingFileFailsClearly)
