@@ -28,6 +28,7 @@ template <class Law> PairSpline<Law>::PairSpline(LAMMPS *lmp) : Pair(lmp)
   d0 = a0 = p0 = q0 = kappa = rc_pair = rs_pair = cut = stiffness = nullptr;
   coeffs = nullptr;
   kappa_any = 0;
+  chain_n = 0;
 }
 
 template <class Law> PairSpline<Law>::~PairSpline()
@@ -54,17 +55,19 @@ template <class Law> PairSpline<Law>::~PairSpline()
 template <class Law> void PairSpline<Law>::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
-  dispatch(eflag, [&](auto t, auto k, auto ev, auto e, auto n) {
-    eval<decltype(t)::value, decltype(k)::value, decltype(ev)::value, decltype(e)::value,
+  dispatch(eflag, [&](auto t, auto mode, auto ev, auto e, auto n) {
+    eval<decltype(t)::value, decltype(mode)::value, decltype(ev)::value, decltype(e)::value,
          decltype(n)::value>();
   });
   if (vflag_fdotr) virial_fdotr_compute();
 }
 
 template <class Law>
-template <int TAIL, bool KAPPA, int EVFLAG, int EFLAG, int NEWTON_PAIR>
+template <int TAIL, int MODE, int EVFLAG, int EFLAG, int NEWTON_PAIR>
 void PairSpline<Law>::eval()
 {
+  constexpr bool KAPPA = MODE != PLAIN;
+  const tagint *_noalias const tag = atom->tag;
   const auto *_noalias const x = (xyz3 *) atom->x[0];
   auto *_noalias const f = (xyz3 *) atom->f[0];
   const int *_noalias const type = atom->type;
@@ -94,11 +97,18 @@ void PairSpline<Law>::eval()
       const double delz = ztmp - x[j].z;
       const double rsq = delx * delx + dely * dely + delz * delz;
       const SplineCoeff &c = ci[type[j]];
-      if (rsq < c.cutsq) {
-        if (rsq <= c.hardsq) singular_error(i, j, rsq);
+      double scale = 1.0;    // chain: the n-th neighbour along the chain feels Pi(r/n)
+      if (MODE == CHAIN) {
+        const tagint n = tag[i] > tag[j] ? tag[i] - tag[j] : tag[j] - tag[i];
+        if (n > chain_n) continue;
+        scale = chain_scale[n];
+      }
+      const double rsq_law = MODE == CHAIN ? rsq * scale : rsq;
+      if (rsq_law < c.cutsq) {
+        if (rsq_law <= c.hardsq) singular_error(i, j, rsq);
         double fpair;
-        const double e = tail_eval<TAIL, KAPPA, Law>(c, rsq, fpair);
-        fpair *= factor_lj;
+        const double e = tail_eval<TAIL, KAPPA, Law>(c, rsq_law, fpair);
+        fpair *= factor_lj * scale;
         fxtmp += delx * fpair;
         fytmp += dely * fpair;
         fztmp += delz * fpair;
@@ -157,6 +167,16 @@ template <class Law> void PairSpline<Law>::allocate()
 
 template <class Law> void PairSpline<Law>::settings(int narg, char **arg)
 {
+  // trailing keyword: chain N
+  chain_n = 0;
+  if (narg >= 2 && strcmp(arg[narg - 2], "chain") == 0) {
+    chain_n = utils::inumeric(FLERR, arg[narg - 1], false, lmp);
+    if (chain_n < 1)
+      error->all(FLERR, "Pair style {}: chain N must be >= 1 (got {})", Law::style, arg[narg - 1]);
+    narg -= 2;
+  }
+  chain_scale.assign(chain_n + 1, 0.0);
+  for (int n = 1; n <= chain_n; n++) chain_scale[n] = 1.0 / ((double) n * n);
   if (narg < 1)
     error->all(FLERR, "Pair style {}: missing tail (cut Rc | wagner | lagunov Rc [start Rs])",
                Law::style);
@@ -321,7 +341,7 @@ template <class Law> void PairSpline<Law>::derive(int i, int j)
     Law::derivs(c, c.kappa * (c.rc - c.a) + c.a, d);
     c.offset = d[0];
   }
-  if (Law::singular && c.kappa > 1.0) {
+  if (Law::singular && c.kappa > 1.0) {    // in the chain: r/n at or inside that distance
     const double rh = c.a * (1.0 - 1.0 / c.kappa);
     c.hardsq = rh * rh;
   }
@@ -350,7 +370,7 @@ template <class Law> double PairSpline<Law>::init_one(int i, int j)
   double d[4];
   law_derivs(i, j, c.a, d, false);
   stiffness[i][j] = stiffness[j][i] = d[2];
-  cut[i][j] = cut[j][i] = c.rc;
+  cut[i][j] = cut[j][i] = c.rc * (chain_n ? chain_n : 1);
   return cut[i][j];
 }
 
@@ -395,6 +415,7 @@ template <class Law> void PairSpline<Law>::write_restart_settings(FILE *fp)
   fwrite(&rs_global, sizeof(double), 1, fp);
   fwrite(&offset_flag, sizeof(int), 1, fp);
   fwrite(&mix_flag, sizeof(int), 1, fp);
+  fwrite(&chain_n, sizeof(int), 1, fp);
 }
 
 template <class Law> void PairSpline<Law>::read_restart_settings(FILE *fp)
@@ -405,8 +426,12 @@ template <class Law> void PairSpline<Law>::read_restart_settings(FILE *fp)
     utils::sfread(FLERR, &rs_global, sizeof(double), 1, fp, nullptr, error);
     utils::sfread(FLERR, &offset_flag, sizeof(int), 1, fp, nullptr, error);
     utils::sfread(FLERR, &mix_flag, sizeof(int), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &chain_n, sizeof(int), 1, fp, nullptr, error);
   }
   MPI_Bcast(&tail, 1, MPI_INT, 0, world);
+  MPI_Bcast(&chain_n, 1, MPI_INT, 0, world);
+  chain_scale.assign(chain_n + 1, 0.0);
+  for (int n = 1; n <= chain_n; n++) chain_scale[n] = 1.0 / ((double) n * n);
   MPI_Bcast(&rc_global, 1, MPI_DOUBLE, 0, world);
   MPI_Bcast(&rs_global, 1, MPI_DOUBLE, 0, world);
   MPI_Bcast(&offset_flag, 1, MPI_INT, 0, world);

@@ -18,6 +18,7 @@
 #include "spline_laws.h"
 
 #include <type_traits>
+#include <vector>
 
 namespace LAMMPS_NS {
 namespace ClusterDyn {
@@ -88,6 +89,8 @@ namespace ClusterDyn {
 
     SplineCoeff *coeffs;        // (ntypes+1)^2 packed kernel data
     int kappa_any;              // some pair has kappa != 1: use the general kernel
+    int chain_n;                // chain N: pairs up to N apart in atom ID, Pi(r/n); 0 = off
+    std::vector<double> chain_scale;    // 1/n^2 for n = 0..N (0 for n = 0)
 
     void allocate();
     void derive(int i, int j);    // checks and fills coeffs for i,j; errors name the pair
@@ -98,11 +101,13 @@ namespace ClusterDyn {
     [[noreturn]] void singular_error(int i, int j, double rsq) const;
     std::string data_args(int i, int j) const;
 
-    // calls run(tail, kappa, evflag, eflag, newton_pair) with compile-time constants
+    // kernel variants: PLAIN (every kappa 1), KAPPA (some kappa != 1), CHAIN (chain N)
+    enum Mode { PLAIN = 0, KAPPA = 1, CHAIN = 2 };
+    // calls run(tail, mode, evflag, eflag, newton_pair) with compile-time constants
     template <class Run> void dispatch(int eflag, Run &&run) const;
 
    private:
-    template <int TAIL, bool KAPPA, int EVFLAG, int EFLAG, int NEWTON_PAIR> void eval();
+    template <int TAIL, int MODE, int EVFLAG, int EFLAG, int NEWTON_PAIR> void eval();
   };
 
   template <class Law>
@@ -126,10 +131,11 @@ namespace ClusterDyn {
       }
     };
     auto with_tail = [&](auto t) {
+      if (chain_n) return with_kappa(t, std::integral_constant<int, CHAIN>());
       if constexpr (Law::kappa_kernel) {
-        if (kappa_any) return with_kappa(t, std::true_type());
+        if (kappa_any) return with_kappa(t, std::integral_constant<int, KAPPA>());
       }
-      with_kappa(t, std::false_type());
+      with_kappa(t, std::integral_constant<int, PLAIN>());
     };
     if (tail == CUT) with_tail(std::integral_constant<int, CUT>());
     else if (tail == WAGNER) with_tail(std::integral_constant<int, WAGNER>());

@@ -41,8 +41,8 @@ template <class Law> void PairSplineOMP<Law>::compute(int eflag, int vflag)
     ThrData *thr = fix->get_thr(tid);
     thr->timer(Timer::START);
     ev_setup_thr(eflag, vflag, nall, this->eatom, this->vatom, nullptr, thr);
-    this->dispatch(eflag, [&](auto t, auto k, auto ev, auto e, auto n) {
-      eval<decltype(t)::value, decltype(k)::value, decltype(ev)::value, decltype(e)::value,
+    this->dispatch(eflag, [&](auto t, auto mode, auto ev, auto e, auto n) {
+      eval<decltype(t)::value, decltype(mode)::value, decltype(ev)::value, decltype(e)::value,
            decltype(n)::value>(ifrom, ito, thr);
     });
     thr->timer(Timer::PAIR);
@@ -51,9 +51,12 @@ template <class Law> void PairSplineOMP<Law>::compute(int eflag, int vflag)
 }
 
 template <class Law>
-template <int TAIL, bool KAPPA, int EVFLAG, int EFLAG, int NEWTON_PAIR>
+template <int TAIL, int MODE, int EVFLAG, int EFLAG, int NEWTON_PAIR>
 void PairSplineOMP<Law>::eval(int iifrom, int iito, ThrData *const thr)
 {
+  constexpr bool KAPPA = MODE != PairSpline<Law>::PLAIN;
+  constexpr bool CHAIN = MODE == PairSpline<Law>::CHAIN;
+  const tagint *_noalias const tag = this->atom->tag;
   const auto *_noalias const x = (xyz3 *) this->atom->x[0];
   auto *_noalias const f = (xyz3 *) thr->get_f()[0];
   const int *_noalias const type = this->atom->type;
@@ -82,11 +85,18 @@ void PairSplineOMP<Law>::eval(int iifrom, int iito, ThrData *const thr)
       const double delz = ztmp - x[j].z;
       const double rsq = delx * delx + dely * dely + delz * delz;
       const SplineCoeff &c = ci[type[j]];
-      if (rsq < c.cutsq) {
-        if (rsq <= c.hardsq) this->singular_error(i, j, rsq);
+      double scale = 1.0;    // chain: the n-th neighbour along the chain feels Pi(r/n)
+      if (CHAIN) {
+        const tagint n = tag[i] > tag[j] ? tag[i] - tag[j] : tag[j] - tag[i];
+        if (n > this->chain_n) continue;
+        scale = this->chain_scale[n];
+      }
+      const double rsq_law = CHAIN ? rsq * scale : rsq;
+      if (rsq_law < c.cutsq) {
+        if (rsq_law <= c.hardsq) this->singular_error(i, j, rsq);
         double fpair;
-        const double e = tail_eval<TAIL, KAPPA, Law>(c, rsq, fpair);
-        fpair *= factor_lj;
+        const double e = tail_eval<TAIL, KAPPA, Law>(c, rsq_law, fpair);
+        fpair *= factor_lj * scale;
         fxtmp += delx * fpair;
         fytmp += dely * fpair;
         fztmp += delz * fpair;

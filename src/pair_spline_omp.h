@@ -20,7 +20,7 @@ namespace ClusterDyn {
     double memory_usage() override;
 
    private:
-    template <int TAIL, bool KAPPA, int EVFLAG, int EFLAG, int NEWTON_PAIR>
+    template <int TAIL, int MODE, int EVFLAG, int EFLAG, int NEWTON_PAIR>
     void eval(int ifrom, int ito, ThrData *const thr);
   };
 

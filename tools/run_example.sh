@@ -5,5 +5,5 @@ set -euo pipefail
 top=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 bash "$top/tools/bootstrap.sh"
 source "$top/build/env.sh"
-cd "$top/examples/shock-chain"
-lmp -in in.shock-chain -log none -nocite "$@" | grep -A30 '^Result'
+cd "$top/examples/chain-1d"
+lmp -in in.chain -log none -nocite "$@" | grep -A30 '^Result'

@@ -22,10 +22,10 @@ def run_example(name, script, *var):
 
 
 def chain(u, damp):
-    out = run_example("shock-chain", "in.shock-chain", ("u", u), ("damp", damp))
+    out = run_example("chain-1d", "in.chain", ("u", u), ("damp", damp))
     surface = int(re.search(r"torn off the free surface: (\d+)", out).group(1))
     vfree = float(re.search(r"free-surface speed: ([-\d.]+)", out).group(1))
-    removed = float(re.search(r"energy removed by fix viscous/relative: ([-\d.e+]+)", out).group(1))
+    removed = float(re.search(r"energy removed by the damping: ([-\d.e+]+)", out).group(1))
     return surface, vfree, removed
 
 

@@ -15,6 +15,8 @@ BAD_SETTINGS = [
     ("morse/spline", "lagunov -1", "lagunov Rc must be > 0"),
     ("harmonic/spline", "wagner", "tail wagner needs an inflection point"),
     ("harmonic/spline", "lagunov 1.3", "needs 'start Rs'"),
+    ("morse/spline", "cut 1.2 chain 0", "chain N must be >= 1"),
+    ("morse/spline", "cut 1.2 chain", "expected one argument Rc"),
 ]
 
 BAD_COEFFS = [  # pair_style, pair_coeff args, message

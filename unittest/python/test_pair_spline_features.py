@@ -13,8 +13,9 @@ STYLES = [  # pair_style, pair_coeff for two types
                                 "2 2 1.0 0.98 12 6 kappa 1.1"]),
     ("harmonic/spline lagunov 1.35 start 1.1", ["1 1 1.3 5.5 1.0", "1 2 1.1 5.0 1.02",
                                                 "2 2 1.0 6.0 0.98 kappa 1.2 rc 1.3"]),
+    ("lj/spline cut 1.3 chain 2", ["1 1 1.3 1.0", "1 2 1.1 1.02 kappa 0.9", "2 2 1.0 0.98"]),
 ]
-IDS = [s[0].split()[0] for s in STYLES]
+IDS = [s[0].split()[0] + ("-chain" if "chain" in s[0] else "") for s in STYLES]
 
 
 def build(lmp, pair_style, coeffs, newton="on", suffix=None):
@@ -132,3 +133,35 @@ def test_mpi_run_equals_serial(tmp_path, nprocs, pair_style, coeffs):
     serial = last_thermo(run_lmp(tmp_path, script), ["PotEng", "KinEng", "Press"])
     parallel = last_thermo(run_lmp(tmp_path, script, nprocs), ["PotEng", "KinEng", "Press"])
     assert parallel == pytest.approx(serial, rel=1e-9)
+
+
+@pytest.mark.parametrize("neighbours", [1, 2, 3])
+def test_chain_keyword_n_th_neighbour_feels_pi_of_r_over_n(neighbours):
+    """Three atoms in ID order along x: with chain N the pair (1,3) interacts through
+    Pi(r/2), cut at 2 Rc a, when N >= 2; the energy against the spec's Morse."""
+    law = Law("morse", 1.3, 1.0, alpha=4.0)
+    x = [0.0, 1.05, 2.2]
+    with session() as lmp:
+        lmp.commands_list(["units lj", "atom_modify map array", "region box block -5 10 -5 5 -5 5",
+                           "create_box 1 box", "mass 1 1.0",
+                           *[f"create_atoms 1 single {xi} 0 0 units box" for xi in x],
+                           f"pair_style morse/spline cut 1.2 chain {neighbours}",
+                           f"pair_coeff 1 1 {law.coeff()}", "thermo_modify norm no", "run 0 post no"])
+        pe = lmp.get_thermo("pe")
+    expected = law.pi(x[1] - x[0]) + law.pi(x[2] - x[1])
+    if neighbours >= 2:
+        expected += law.pi((x[2] - x[0]) / 2)  # 2.2/2 = 1.1 < 1.2: inside
+    assert pe == pytest.approx(expected, rel=1e-13)
+
+
+def test_chain_keyword_restricts_to_chain_neighbours():
+    """Atoms 1 and 3 close in space but 2 apart in ID: no interaction with chain 1."""
+    law = Law("morse", 1.3, 1.0, alpha=4.0)
+    with session() as lmp:
+        lmp.commands_list(["units lj", "atom_modify map array", "region box block -5 10 -5 5 -5 5",
+                           "create_box 1 box", "mass 1 1.0", "create_atoms 1 single 0 0 0",
+                           "create_atoms 1 single 1.0 0 0", "create_atoms 1 single 0 1.0 0",
+                           "pair_style morse/spline cut 1.2 chain 1", f"pair_coeff 1 1 {law.coeff()}",
+                           "thermo_modify norm no", "run 0 post no"])
+        pe = lmp.get_thermo("pe")
+    assert pe == pytest.approx(law.pi(1.0) + 0.0, rel=1e-13)  # (1,2) only; (2,3), (1,3) not
