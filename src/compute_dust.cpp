@@ -40,6 +40,24 @@ using namespace ClusterDyn;
 
 enum { FRAGMENT_ID = 0, FRAGMENT_SIZE = 1, DUST_FLAG = 2 };
 
+// every processor's entries, concatenated in rank order, on every processor
+template <class T>
+static std::vector<T> allgatherv(const std::vector<T> &mine, MPI_Datatype type, MPI_Comm world)
+{
+  int nprocs, n = mine.size();
+  MPI_Comm_size(world, &nprocs);
+  std::vector<int> counts(nprocs), displs(nprocs);
+  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
+  int total = 0;
+  for (int p = 0; p < nprocs; p++) {
+    displs[p] = total;
+    total += counts[p];
+  }
+  std::vector<T> all(total);
+  MPI_Allgatherv(mine.data(), n, type, all.data(), counts.data(), displs.data(), type, world);
+  return all;
+}
+
 ComputeDust::ComputeDust(LAMMPS *lmp, int narg, char **arg) :
     Compute(lmp, narg, arg), cutoff_user(0.0), maxsize(0), list(nullptr), nmax(0),
     fragments(nullptr), evaluated(-1)
@@ -191,23 +209,13 @@ void ComputeDust::evaluate()
       }
     }
   }
-  int npairs = pairs.size(), nprocs = comm->nprocs;
-  std::vector<int> counts(nprocs), displs(nprocs);
-  MPI_Allgather(&npairs, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
-  int total = 0;
-  for (int p = 0; p < nprocs; p++) {
-    displs[p] = total;
-    total += counts[p];
-  }
-  std::vector<tagint> allpairs(total);
-  MPI_Allgatherv(pairs.data(), npairs, MPI_LMP_TAGINT, allpairs.data(), counts.data(),
-                 displs.data(), MPI_LMP_TAGINT, world);
+  const std::vector<tagint> allpairs = allgatherv(pairs, MPI_LMP_TAGINT, world);
   std::unordered_map<tagint, tagint> up;    // label -> smaller label of the same fragment
   auto root = [&](tagint t) {
     for (auto it = up.find(t); it != up.end(); it = up.find(t)) t = it->second;
     return t;
   };
-  for (int k = 0; k < total; k += 2) {
+  for (size_t k = 0; k < allpairs.size(); k += 2) {
     const tagint ra = root(allpairs[k]), rb = root(allpairs[k + 1]);
     if (ra != rb) up[std::max(ra, rb)] = std::min(ra, rb);
   }
@@ -227,18 +235,9 @@ void ComputeDust::evaluate()
   std::vector<double> packed;
   for (const auto &kv : local) packed.insert(packed.end(), {(double) kv.first, kv.second.first,
                                                             kv.second.second});
-  int npacked = packed.size();
-  MPI_Allgather(&npacked, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
-  total = 0;
-  for (int p = 0; p < nprocs; p++) {
-    displs[p] = total;
-    total += counts[p];
-  }
-  std::vector<double> allpacked(total);
-  MPI_Allgatherv(packed.data(), npacked, MPI_DOUBLE, allpacked.data(), counts.data(),
-                 displs.data(), MPI_DOUBLE, world);
+  const std::vector<double> allpacked = allgatherv(packed, MPI_DOUBLE, world);
   std::map<tagint, std::pair<double, double>> global;
-  for (int k = 0; k < total; k += 3) {
+  for (size_t k = 0; k < allpacked.size(); k += 3) {
     auto &entry = global[(tagint) allpacked[k]];
     entry.first += allpacked[k + 1];
     entry.second += allpacked[k + 2];

@@ -39,12 +39,14 @@ def run(**var):
         lmp.file("in.chain")
         series = global_array(lmp, "series")
         work = global_array(lmp, "work")
-        ids = np.array(lmp.gather_atoms("id", 0, 1))
-        x = np.array(lmp.gather_atoms("x", 1, 3)).reshape(-1, 3)[np.argsort(ids), 0]
+        order = np.argsort(np.array(lmp.gather_atoms("id", 0, 1)))
+        x = np.array(lmp.gather_atoms("x", 1, 3)).reshape(-1, 3)[order, 0]
+        v = np.array(lmp.gather_atoms("v", 1, 3)).reshape(-1, 3)[order, 0]
         out = {"surface": lmp.extract_variable("surface"), "vfree": lmp.extract_variable("vfree"),
                "removed": lmp.extract_variable("removed"), "pchain": lmp.extract_variable("pchain"),
                "dt": lmp.extract_global("dt"), "c0": lmp.extract_variable("c0"),
-               "e_end": lmp.get_thermo("pe") + lmp.get_thermo("ke")}
+               "e_end": lmp.get_thermo("pe") + lmp.get_thermo("ke"),
+               "steps": lmp.extract_variable("steps")}
     finally:
         lmp.command("plugin clear")    # one plugin registry per process: leave it empty
         lmp.close()
@@ -54,7 +56,9 @@ def run(**var):
     cumulative = np.concatenate([[0.0], np.cumsum(0.5 * dt * (work[1:, 0] + work[:-1, 0]))])
     out["work_series"] = cumulative[::int(var.get("every", 50))]
     out["impulse"] = np.trapz(work[:, 1], dx=dt)
-    out["series"], out["x"], out["seconds"] = series, x, time.time() - start
+    out["series"], out["x"], out["v"], out["seconds"] = series, x, v, time.time() - start
+    e0 = series[0, 21] + series[0, 22]
+    out["balance"] = abs(e0 + out["work"] - out["e_end"] - out["removed"]) / out["work"]
     out["detached"] = detached(x, int(var.get("neighbours", 1)))
     return out
 

@@ -27,6 +27,7 @@ def run_one(var):
     if os.path.exists(cache):
         result = json.load(open(cache))
         result["profile"] = np.array(result["profile"])
+        result["history"] = read_history(os.path.join(workdir, "log.lammps"))
         return result
     os.makedirs(workdir, exist_ok=True)
     args = ["-log", "log.lammps", "-screen", "none", "-nocite"]
@@ -51,7 +52,22 @@ def run_one(var):
     result["var"] = var
     json.dump(result, open(cache, "w"))
     result["profile"] = np.array(result["profile"])
+    result["history"] = read_history(os.path.join(workdir, "log.lammps"))
     return result
+
+
+def read_history(path):
+    """(time, surface dust) from the thermo output of the production run."""
+    rows, inside = [], False
+    for line in open(path):
+        words = line.split()
+        if words[:2] == ["Step", "Time"]:
+            inside, rows = True, []
+        elif inside and words and words[0].isdigit():
+            rows.append((float(words[1]), float(words[5])))
+        elif inside and line.startswith("Loop time"):
+            inside = False
+    return rows
 
 
 def read_profile(path):
@@ -145,6 +161,19 @@ def plots(results, thresholds):
     ax.legend()
     fig.tight_layout()
     fig.savefig(os.path.join(HERE, "dust_vs_u.png"), dpi=90)
+    plt.close(fig)
+
+    fig, ax = plt.subplots(figsize=(7, 4))
+    for var in ({"rc": 1.1, "u": 1000}, {"rc": 1.1, "u": 2000}, {"rc": 1.1, "u": 4000},
+                {"rc": 1.2, "u": 2000}, {"rc": 1.3, "u": 3000}):
+        r = next(r for r in results if r["var"] == var)
+        t, d = zip(*r["history"])
+        ax.plot(np.array(t) * 1e6, d, "o-", label=f"Rc = {var['rc']}, u = {var['u']} m/s")
+    ax.set_xlabel("time (us)")
+    ax.set_ylabel("dust clusters beyond the body")
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(os.path.join(HERE, "dust_vs_time.png"), dpi=90)
     plt.close(fig)
 
     plain = next(r for r in results if r["var"] == {"rc": 1.1, "u": 2000})
