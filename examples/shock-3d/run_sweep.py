@@ -85,7 +85,6 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[1])
     ap.add_argument("--jobs", type=int, default=2)
     args = ap.parse_args()
-    start = time.time()
 
     grids = {1.05: [200, 300, 400, 500, 600], 1.1: [400, 500, 600, 800, 1000, 1500, 2000, 3000, 4000],
              1.2: [800, 1000, 1200, 1400, 1600, 2000, 3000], 1.3: [1600, 2000, 2500, 3000, 3500]}
@@ -138,8 +137,9 @@ def main():
 
     seconds = [r["seconds"] for r in results]
     atomsteps = sum(r["natoms"] * r["steps"] for r in results)
-    out += ["", f"{len(results)} runs, {sum(seconds):.0f} s of runs in {time.time() - start:.0f} s "
-            f"wall ({args.jobs} at a time); {atomsteps / sum(seconds):.3g} atom-steps/s per run."]
+    out += ["", f"{len(results)} runs, {sum(seconds):.0f} s of run time ({args.jobs} at a time, so "
+            f"about {sum(seconds) / args.jobs:.0f} s of wall time); {atomsteps / sum(seconds):.3g} "
+            "atom-steps/s per run."]
     open(os.path.join(HERE, "results.md"), "w").write("\n".join(out) + "\n")
     plots(results, thresholds)
     print("\n".join(out))
