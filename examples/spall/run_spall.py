@@ -10,10 +10,13 @@ Writes results.md and spall.png next to this file.
 import os
 import time
 
+import sys
+
 import numpy as np
-from lammps import lammps
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.dirname(HERE))
+from lammps_driver import script  # noqa: E402
 POTENTIALS = {"al-cluster-10um": "Morse, alpha a = 3.76 (aluminium clusters)",
               "morse-lj-match": "Morse, alpha a = 6", "lj-reduced": "Lennard-Jones"}
 RATIOS = [round(0.6 + 0.05 * k, 2) for k in range(21)]   # v / vd = 0.6 ... 1.6
@@ -21,23 +24,11 @@ RATIOS = [round(0.6 + 0.05 * k, 2) for k in range(21)]   # v / vd = 0.6 ... 1.6
 
 def run(ratio, pot, **var):
     """One impact; returns spall (bool), the spalled share of the target and the wall time."""
-    args = ["-log", "none", "-screen", "none", "-nocite", "-var", "ratio", str(ratio),
-            "-var", "pot", pot]
-    for key, value in var.items():
-        args += ["-var", key, str(value)]
-    cwd = os.getcwd()
-    os.chdir(HERE)
     start = time.time()
-    lmp = lammps(cmdargs=args)
-    try:
-        lmp.file("in.spall")
+    with script(os.path.join(HERE, "in.spall"), {"ratio": ratio, "pot": pot, **var}) as lmp:
         large = lmp.extract_variable("large")
         parts = np.array(lmp.gather("c_parts", 1, 3)).reshape(-1, 3)
         x = np.array(lmp.gather_atoms("x", 1, 3)).reshape(-1, 3)[:, 0]
-        lmp.command("plugin clear")
-    finally:
-        lmp.close()
-        os.chdir(cwd)
     intarget = parts[:, 1] > 0
     big = intarget & (parts[:, 2] == 0)
     ids = np.unique(parts[big, 0])
