@@ -5,7 +5,8 @@
    PairSpline<Law> holds what every law shares: the tail (cut, wagner,
    lagunov), the kappa modification, coefficients, restart, data files,
    single(), born_matrix() and extract().  The force loop is compiled per
-   tail and for kappa == 1, so a scene pays only for what it uses.
+   tail and per mode (every kappa 1, some kappa != 1, chain N), so a scene
+   pays only for what it uses.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_CLUSTERDYN_PAIR_SPLINE_H
