@@ -1,6 +1,9 @@
 /* ----------------------------------------------------------------------
    Cluster-dynamics plugin for LAMMPS: registers every style of the package
-   (and its /omp variant) with LAMMPS on "plugin load clusterdynplugin.so".
+   with LAMMPS on "plugin load clusterdynplugin.so".  The /omp variants live
+   in clusterdyn_omp.so beside it (they need the OPENMP package's symbols);
+   it is loaded from here when the host LAMMPS has OPENMP, so that this file
+   loads into any LAMMPS with PLUGIN.
 ------------------------------------------------------------------------- */
 
 #include "lammpsplugin.h"
@@ -10,7 +13,18 @@
 #include "compute_pair_params.h"
 #include "fix_viscous_relative.h"
 #include "pair_spline.h"
-#include "pair_spline_omp.h"
+
+#include "comm.h"
+#include "info.h"
+#include "lammps.h"
+#include "platform.h"
+#include "utils.h"
+
+#include <dlfcn.h>
+
+namespace LAMMPS_NS {
+int plugin_load(const char *, LAMMPS *);    // PLUGIN/plugin.h
+}
 
 using namespace LAMMPS_NS;
 using namespace ClusterDyn;
@@ -31,19 +45,34 @@ void register_pair(void *lmp, void *handle, lammpsplugin_regfunc register_plugin
   plugin.author = "cluster-dynamics plugin developers";
   plugin.handle = handle;
   // LAMMPS keeps these pointers: one static copy per style
-  static const std::string name = Law::style;
-  static const std::string info = "cluster-dynamics pair style " + name;
-  static const std::string omp_name = name + "/omp";
-  static const std::string omp_info = info + " with OpenMP threads";
-  plugin.name = name.c_str();
+  static const std::string info = std::string("cluster-dynamics pair style ") + Law::style;
+  plugin.name = Law::style;
   plugin.info = info.c_str();
   plugin.creator.v1 = (lammpsplugin_factory1 *) &create_pair<PairSpline<Law>>;
   (*register_plugin)(&plugin, lmp);
+}
 
-  plugin.name = omp_name.c_str();
-  plugin.info = omp_info.c_str();
-  plugin.creator.v1 = (lammpsplugin_factory1 *) &create_pair<PairSplineOMP<Law>>;
-  (*register_plugin)(&plugin, lmp);
+// clusterdyn_omp.so from the folder of this file, if the host LAMMPS has OPENMP
+void load_omp_variants(LAMMPS *lmp)
+{
+  const bool me0 = lmp->comm->me == 0;
+  if (!Info::has_package("OPENMP")) {
+    if (me0)
+      utils::logmesg(lmp, "  cluster-dynamics plugin: this LAMMPS has no OPENMP package; the "
+                     "/omp pair styles are not loaded\n");
+    return;
+  }
+  Dl_info self;
+  if (!dladdr((void *) &load_omp_variants, &self) || !self.dli_fname) return;
+  const std::string file = platform::path_join(platform::path_dirname(self.dli_fname),
+                                               "clusterdyn_omp.so");
+  if (!platform::file_is_readable(file)) {
+    if (me0)
+      utils::logmesg(lmp, "  cluster-dynamics plugin: {} not found; the /omp pair styles are not "
+                     "loaded\n", file);
+    return;
+  }
+  plugin_load(file.c_str(), lmp);
 }
 
 Fix *create_fix_viscous_relative(LAMMPS *lmp, int narg, char **arg)
@@ -91,4 +120,6 @@ extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
   plugin.info = "fragments of the bond graph and the dust";
   plugin.creator.v2 = (lammpsplugin_factory2 *) &create_compute_dust;
   (*register_plugin)(&plugin, lmp);
+
+  load_omp_variants((LAMMPS *) lmp);
 }

@@ -7,7 +7,8 @@
    maxsize atoms) are dust.  One evaluation, in a fixed number of
    communication rounds whatever the decomposition:
      1. union-find over my atoms and ghosts (the images of one atom are
-        joined through atom->map), local label = smallest atom ID in the set
+        joined through atom->map, or a hash of the IDs when there is no
+        map), local label = smallest atom ID in the set
      2. one forward communication of the labels of my atoms to their ghosts
      3. one MPI_Allgatherv of the label pairs (mine, owner's) that ghosts
         owned by other processors create; a global union-find over them
@@ -17,6 +18,8 @@
 ------------------------------------------------------------------------- */
 
 #include "compute_dust.h"
+
+#include "skin_check.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -93,8 +96,7 @@ ComputeDust::~ComputeDust()
 
 void ComputeDust::init()
 {
-  if (atom->map_style == Atom::MAP_NONE)
-    error->all(FLERR, "Compute dust requires an atom map: use atom_modify map yes");
+  if (!atom->tag_enable) error->all(FLERR, "Compute dust requires atom IDs");
   if (cutoff_user == 0.0 && (!force->pair || !force->pair->cutsq))
     error->all(FLERR, "Compute dust: without the cutoff keyword it needs a pair style, whose "
                "cutoffs are the bond distances");
@@ -110,6 +112,9 @@ void ComputeDust::init()
   if (cutoff_user > cutghost)
     error->all(FLERR, "Compute dust: cutoff {} exceeds the ghost atom range {}: raise it with "
                "comm_modify cutoff", cutoff_user, cutghost);
+  if (cutoff_user > 0.0)
+    check_neighbor_skin(lmp, force->pair ? MAX(cutoff_user, force->pair->cutforce) : cutoff_user,
+                        "Compute dust");
 
   auto req = neighbor->add_request(this, NeighConst::REQ_OCCASIONAL);
   if (cutoff_user > 0.0 && (!force->pair || cutoff_user > force->pair->cutforce))
@@ -164,9 +169,17 @@ void ComputeDust::evaluate()
 
   parent.resize(nall);
   for (int i = 0; i < nall; i++) parent[i] = i;
-  for (int i = nlocal; i < nall; i++) {
-    const int canonical = atom->map(tag[i]);
-    if (canonical >= 0 && canonical != i) parent[find(i)] = find(canonical);
+  if (atom->map_style != Atom::MAP_NONE) {
+    for (int i = nlocal; i < nall; i++) {
+      const int canonical = atom->map(tag[i]);
+      if (canonical >= 0 && canonical != i) parent[find(i)] = find(canonical);
+    }
+  } else {    // no atom map: one of our own, my atoms first (as atom->map prefers them)
+    std::unordered_map<tagint, int> first(2 * nall);
+    for (int i = 0; i < nall; i++) {
+      const auto seen = first.emplace(tag[i], i);
+      if (!seen.second) parent[find(i)] = find(seen.first->second);
+    }
   }
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];

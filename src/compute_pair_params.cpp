@@ -30,6 +30,14 @@ using namespace ClusterDyn;
 static constexpr double NaN = std::numeric_limits<double>::quiet_NaN();
 static constexpr int NCOLS = 6;
 
+// the whole of str is a number as strtod reads it (nan and inf included)
+static bool is_number(const char *str)
+{
+  char *end;
+  strtod(str, &end);
+  return end != str && *end == '\0';
+}
+
 ComputePairParams::ComputePairParams(LAMMPS *lmp, int narg, char **arg) :
     Compute(lmp, narg, arg), mass_user(0.0), rc_user(0.0), lambda(0.0), fresh(0)
 {
@@ -44,6 +52,9 @@ ComputePairParams::ComputePairParams(LAMMPS *lmp, int narg, char **arg) :
 
   for (int iarg = 5; iarg < narg;) {
     const std::string key = arg[iarg];
+    if (key != "mass" && key != "rc" && key != "lattice" && key != "u")
+      error->all(FLERR, "Compute pair/params: unknown keyword '{}' (expected mass, rc, lattice "
+                 "or u)", key);
     if (key != "u" && iarg + 1 >= narg)
       error->all(FLERR, "Compute pair/params: keyword {} needs a value", key);
     if (key == "mass") {
@@ -65,17 +76,18 @@ ComputePairParams::ComputePairParams(LAMMPS *lmp, int narg, char **arg) :
         error->all(FLERR, "Compute pair/params: unknown lattice '{}' (expected chain, tri or fcc)",
                    name);
       iarg += 2;
-    } else if (key == "u") {
-      for (iarg++; iarg < narg && utils::is_double(arg[iarg]); iarg++) {
-        const double u = utils::numeric(FLERR, arg[iarg], false, lmp);
-        if (!(u > 0.0))
-          error->all(FLERR, "Compute pair/params: loading speed u must be > 0 (got {})", arg[iarg]);
+    } else {    // u: the numbers up to the next keyword; nan and inf are numbers, refused
+      for (iarg++; iarg < narg && is_number(arg[iarg]); iarg++) {
+        const double u = strtod(arg[iarg], nullptr);
+        if (!(u > 0.0) || !std::isfinite(u))
+          error->all(FLERR, "Compute pair/params: loading speed u must be a finite number > 0 "
+                     "(got {})", arg[iarg]);
         speeds.push_back(u);
       }
-      if (speeds.empty()) error->all(FLERR, "Compute pair/params: keyword u needs speeds");
-    } else
-      error->all(FLERR, "Compute pair/params: unknown keyword '{}' (expected mass, rc, lattice "
-                 "or u)", key);
+      if (speeds.empty())
+        error->all(FLERR, "Compute pair/params: keyword u needs at least one speed (got {})",
+                   iarg < narg ? fmt::format("'{}'", arg[iarg]) : std::string("nothing"));
+    }
   }
 
   vector_flag = 1;
@@ -202,9 +214,11 @@ void ComputePairParams::evaluate()
   const double fstar = std::isnan(b) ? NaN : fabs(at_b.force(b));
   const double c = probe->d2(a);
   const double e2a = probe->energy(2.0 * a);
+  // with LAMMPS's unit conversions: acceleration = ftm2v force/mass, kinetic energy =
+  // mvv2e m v^2 / 2, a damping force B v of fix viscous is in force units
   const double m = mass_user > 0.0 ? mass_user : atom->mass[itype];
   const double rc = rc_user > 0.0 ? rc_user : cut / a;
-  const double omega0 = sqrt(c / m);
+  const double omega0 = sqrt(force->ftm2v * c / m);
   const double v0 = a * omega0;
 
   double *v = vector;
@@ -222,8 +236,8 @@ void ComputePairParams::evaluate()
   v[11] = omega0;
   v[12] = 2.0 * M_PI / omega0;
   v[13] = v0;
-  v[14] = sqrt(2.0 * d / m);
-  v[15] = 2.0 * sqrt(m * c);
+  v[14] = sqrt(2.0 * d / (m * force->mvv2e));
+  v[15] = 2.0 * sqrt(m * c / force->ftm2v);
   v[16] = rc;
   v[17] = 1.35 * (rc - 1.0) * v0;
   v[18] = (rc - 1.0) * v0 / (2.0 * M_SQRT2);
@@ -255,11 +269,14 @@ void ComputePairParams::shock_table(LawProbe &probe, double a, double c)
         break;
       }
     }
-    if (std::isnan(y))
-      error->warning(FLERR, "Compute pair/params: no steady compression for u = {} (the law does "
-                     "not stiffen enough): row {} is NaN", u, k + 1);
-    const double cu = c0 * sqrt(probe.d2(y * a) / c);
     array[k][0] = u;
+    if (std::isnan(y)) {
+      error->warning(FLERR, "Compute pair/params: no steady compression for u = {} (the law does "
+                     "not stiffen enough): row {} is NaN after u", u, k + 1);
+      for (int col = 1; col < NCOLS; col++) array[k][col] = NaN;
+      continue;
+    }
+    const double cu = c0 * sqrt(probe.d2(y * a) / c);
     array[k][1] = y;
     array[k][2] = cu / c0;
     array[k][3] = cu;

@@ -2,10 +2,14 @@
    Cluster-dynamics plugin for LAMMPS: fix viscous/relative.
 
    Each pair (i,j) of group atoms closer than the damping range gets
-     F_i = -F_j = -m_ij G_ij w(r) dv,   dv = v_i - v_j  (mode full)
-                                         or (dv . e) e   (mode normal)
+     F_i = -F_j = -m_ij G_ij w(r) dv / ftm2v,   dv = v_i - v_j  (mode full)
+                                                 or (dv . e) e   (mode normal)
    with m_ij = 2 m_i m_j / (m_i + m_j), so the forces cancel in pairs and
-   the total momentum is conserved.  post_force() sums them on a half
+   the total momentum is conserved; ftm2v (force->ftm2v) makes the force of
+   mass x velocity / time a force in every unit style, so that the relative
+   velocity of an isolated pair decays as exp(-2 G t).  Coincident atoms
+   (r < 1e-10 of the damping range) have no normal: mode normal skips them,
+   as pair dpd/tstat does.  post_force() sums them on a half
    neighbor list into fd (own and ghost atoms), adds the ghost parts to
    their owners (reverse communication), then adds fd to f.
 
@@ -18,6 +22,7 @@
 #include "fix_viscous_relative.h"
 
 #include "pair_spline.h"    // xyz3
+#include "skin_check.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -99,6 +104,9 @@ int FixViscousRelative::setmask()
 
 void FixViscousRelative::init()
 {
+  if (utils::strmatch(update->integrate_style, "^respa"))
+    error->all(FLERR, "Fix viscous/relative does not support run_style respa: its energy "
+               "tally follows velocity Verlet's half kicks (use run_style verlet)");
   if (!force->pair && cutoff_user == 0.0)
     error->all(FLERR, "Fix viscous/relative needs a pair style (its cutoffs are the damping "
                "range) or the cutoff keyword");
@@ -119,6 +127,10 @@ void FixViscousRelative::init()
       tp.stiffness = by_j ? stiffness[i][j] : 0.0;
       tp.coef = atom->rmass ? 0.0 : friction(tp, atom->mass[i], atom->mass[j]);
     }
+
+  if (cutoff_user > 0.0)
+    check_neighbor_skin(lmp, force->pair ? MAX(cutoff_user, force->pair->cutforce) : cutoff_user,
+                        "Fix viscous/relative");
 
   // relative velocities need ghost velocities
   comm->ghost_velocity = 1;
@@ -167,10 +179,15 @@ void FixViscousRelative::post_integrate()
   removed -= 0.25 * update->dt * (power_full + power());
 }
 
+double FixViscousRelative::rate(const TypePair &tp, double mij) const
+{
+  return by_j ? sqrt(force->ftm2v * tp.stiffness / mij) / value : value;
+}
+
 double FixViscousRelative::friction(const TypePair &tp, double mi, double mj) const
 {
   const double mij = 2.0 * mi * mj / (mi + mj);
-  return by_j ? sqrt(tp.stiffness * mij) / value : mij * value;
+  return mij * rate(tp, mij) / force->ftm2v;
 }
 
 double FixViscousRelative::power() const
@@ -261,6 +278,7 @@ template <int NORMAL, int DPD, int GENERAL> void FixViscousRelative::damp()
       double dvy = vytmp - v[j].y;
       double dvz = vztmp - v[j].z;
       if (NORMAL) {
+        if (rsq < 1e-20 * tp.cutsq) continue;    // coincident: no normal direction
         const double proj = (dvx * delx + dvy * dely + dvz * delz) / rsq;
         dvx = proj * delx;
         dvy = proj * dely;
@@ -319,7 +337,7 @@ void FixViscousRelative::check_stability()
       if (force->newton_pair || j < nlocal) fd[j][0] += 1.0;
       const double mi = atom->rmass ? atom->rmass[i] : atom->mass[type[i]];
       const double mj = atom->rmass ? atom->rmass[j] : atom->mass[type[j]];
-      rate_max = MAX(rate_max, friction(tp, mi, mj) * (mi + mj) / (2.0 * mi * mj));
+      rate_max = MAX(rate_max, rate(tp, 2.0 * mi * mj / (mi + mj)));
     }
   }
   if (force->newton_pair) comm->reverse_comm(this);

@@ -37,7 +37,7 @@ namespace ClusterDyn {
     struct TypePair {
       double cutsq;          // damping range, squared
       double inv_cut;        // 1 / damping range (weight dpd)
-      double coef;           // m_ij G_ij for per-type masses
+      double coef;           // m_ij G_ij / ftm2v for per-type masses
       double stiffness;      // C_ij from the pair style (J style)
     };
     TypePair *typepair;      // (ntypes+1)^2
@@ -49,7 +49,8 @@ namespace ClusterDyn {
 
     double compute_forces(int vflag);    // returns the power sum of my atoms
     template <int NORMAL, int DPD, int GENERAL> void damp();
-    double friction(const TypePair &tp, double mi, double mj) const;    // m_ij G_ij
+    double rate(const TypePair &tp, double mij) const;    // G_ij (1/time)
+    double friction(const TypePair &tp, double mi, double mj) const;    // m_ij G_ij / ftm2v
     double power() const;    // sum over my atoms of fd . v
     void check_stability();
   };

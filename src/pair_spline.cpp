@@ -5,19 +5,26 @@
 
 #include "pair_spline.h"
 
+#include "skin_check.h"
+
 #include "atom.h"
 #include "comm.h"
 #include "error.h"
 #include "force.h"
+#include "math_const.h"
 #include "memory.h"
 #include "neigh_list.h"
 #include "neighbor.h"
+#include "update.h"
 
 #include <cmath>
 #include <cstring>
 
 using namespace LAMMPS_NS;
 using namespace ClusterDyn;
+using MathConst::MY_PI;
+
+static constexpr double BIG = 1.0e300;
 
 template <class Law> PairSpline<Law>::PairSpline(LAMMPS *lmp) : Pair(lmp)
 {
@@ -29,6 +36,7 @@ template <class Law> PairSpline<Law>::PairSpline(LAMMPS *lmp) : Pair(lmp)
   coeffs = nullptr;
   kappa_any = 0;
   chain_n = 0;
+  step_warned = 0;
 }
 
 template <class Law> PairSpline<Law>::~PairSpline()
@@ -60,6 +68,7 @@ template <class Law> void PairSpline<Law>::compute(int eflag, int vflag)
          decltype(n)::value>();
   });
   if (vflag_fdotr) virial_fdotr_compute();
+  if (neighbor->ago == 0) check_time_step();
 }
 
 template <class Law>
@@ -100,7 +109,7 @@ void PairSpline<Law>::eval()
       double scale = 1.0;    // chain: the n-th neighbour along the chain feels Pi(r/n)
       if (MODE == CHAIN) {
         const tagint n = tag[i] > tag[j] ? tag[i] - tag[j] : tag[j] - tag[i];
-        if (n > chain_n) continue;
+        if (n == 0 || n > chain_n) continue;    // n = 0: a periodic image of atom i
         scale = chain_scale[n];
       }
       const double rsq_law = MODE == CHAIN ? rsq * scale : rsq;
@@ -139,6 +148,78 @@ template <class Law> void PairSpline<Law>::singular_error(int i, int j, double r
   std::abort();    // not reached: error->one() throws
 }
 
+/* ----------------------------------------------------------------------
+   warn once when the time step exceeds what compute pair/params suggests for
+   the deepest compression present: T_min/20 with T_min = pi / sqrt(ftm2v Pi''(r)/m)
+   at the closest pair of each type pair (the law's argument r/n in a chain),
+   Pi'' at least C, m the smaller mass.  Called on steps that rebuilt the list.
+------------------------------------------------------------------------- */
+
+template <class Law> void PairSpline<Law>::check_time_step()
+{
+  if (step_warned || update->whichflag != 1) return;
+  const int ntp1 = atom->ntypes + 1;
+  std::vector<double> rminsq(ntp1 * ntp1, BIG);
+  const double *const *const x = atom->x;
+  const int *const type = atom->type;
+  const tagint *const tag = atom->tag;
+  for (int ii = 0; ii < list->inum; ii++) {
+    const int i = list->ilist[ii];
+    const int *jlist = list->firstneigh[i];
+    for (int jj = 0; jj < list->numneigh[i]; jj++) {
+      const int j = jlist[jj] & NEIGHMASK;
+      const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
+      double rsq = dx * dx + dy * dy + dz * dz;
+      if (chain_n) {
+        const tagint n = tag[i] > tag[j] ? tag[i] - tag[j] : tag[j] - tag[i];
+        if (n == 0 || n > chain_n) continue;
+        rsq *= chain_scale[n];
+      }
+      double &rmin = rminsq[type[i] * ntp1 + type[j]];
+      if (rsq < pair_coeff(type[i], type[j]).cutsq && rsq < rmin) rmin = rsq;
+    }
+  }
+  double mass_min = BIG;
+  if (atom->rmass)
+    for (int i = 0; i < atom->nlocal; i++) mass_min = MIN(mass_min, atom->rmass[i]);
+  double mine[2] = {BIG, BIG}, all[2];    // suggested step, closest r/a
+  for (int i = 1; i < ntp1; i++)
+    for (int j = 1; j < ntp1; j++) {
+      const double rsq = MIN(rminsq[i * ntp1 + j], rminsq[j * ntp1 + i]);
+      if (rsq == BIG) continue;
+      const double r = sqrt(rsq);
+      double d[4];
+      law_derivs(i, j, r, d, true);
+      const double m = atom->rmass ? mass_min : MIN(atom->mass[i], atom->mass[j]);
+      const double k = MAX(d[2], stiffness[i][j]);
+      mine[0] = MIN(mine[0], MY_PI / (20.0 * sqrt(force->ftm2v * k / m)));
+      mine[1] = MIN(mine[1], r / pair_coeff(i, j).a);
+    }
+  MPI_Allreduce(mine, all, 2, MPI_DOUBLE, MPI_MIN, world);
+  if (update->dt > all[0]) {
+    step_warned = 1;
+    if (comm->me == 0)
+      error->warning(FLERR, "Pair {}: time step {:.4g} exceeds {:.4g}, the step compute "
+                     "pair/params suggests (T_min/20) for the compression present at step {} "
+                     "(closest pair at {:.4g} a): the run may be inaccurate or unstable; reduce "
+                     "the time step", Law::style, update->dt, all[0], update->ntimestep, all[1]);
+  }
+}
+
+/* ----------------------------------------------------------------------
+   LAMMPS's default skin is a fixed length per unit style (units si: 1 mm);
+   at cluster scale it is 100 particle sizes, and binning then fails
+------------------------------------------------------------------------- */
+
+template <class Law> void PairSpline<Law>::check_skin() const
+{
+  double cutmax = 0.0;
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++)
+      if (setflag[i][j]) cutmax = MAX(cutmax, pair_coeff(i, j).rc * (chain_n ? chain_n : 1));
+  check_neighbor_skin(lmp, cutmax, fmt::format("Pair {}", Law::style));
+}
+
 /* ---------------------------------------------------------------------- */
 
 template <class Law> void PairSpline<Law>::allocate()
@@ -162,59 +243,86 @@ template <class Law> void PairSpline<Law>::allocate()
 }
 
 /* ----------------------------------------------------------------------
-   pair_style STYLE cut Rc | wagner | lagunov Rc [start Rs]
+   pair_style STYLE cut Rc | wagner | lagunov Rc [start Rs]  [chain N]
 ------------------------------------------------------------------------- */
 
 template <class Law> void PairSpline<Law>::settings(int narg, char **arg)
 {
-  // trailing keyword: chain N
-  chain_n = 0;
-  if (narg >= 2 && strcmp(arg[narg - 2], "chain") == 0) {
-    chain_n = utils::inumeric(FLERR, arg[narg - 1], false, lmp);
-    if (chain_n < 1)
-      error->all(FLERR, "Pair style {}: chain N must be >= 1 (got {})", Law::style, arg[narg - 1]);
-    narg -= 2;
-  }
-  chain_scale.assign(chain_n + 1, 0.0);
-  for (int n = 1; n <= chain_n; n++) chain_scale[n] = 1.0 / ((double) n * n);
   if (narg < 1)
     error->all(FLERR, "Pair style {}: missing tail (cut Rc | wagner | lagunov Rc [start Rs])",
                Law::style);
   const std::string name = arg[0];
+  int iarg = 1;
   rs_global = 0.0;
+  auto tail_number = [&](const char *what) {
+    if (iarg >= narg || !utils::is_double(arg[iarg]))
+      error->all(FLERR, "Pair style {} {}: expected a number {} (got {})", Law::style, name, what,
+                 iarg < narg ? fmt::format("'{}'", arg[iarg]) : std::string("nothing"));
+    return arg[iarg++];
+  };
   if (name == "cut") {
-    if (narg != 2) error->all(FLERR, "Pair style {} cut: expected one argument Rc", Law::style);
     tail = CUT;
-    rc_global = utils::numeric(FLERR, arg[1], false, lmp);
+    const char *rc = tail_number("Rc");
+    rc_global = utils::numeric(FLERR, rc, false, lmp);
     if (!(rc_global > 1.0))
       error->all(FLERR, "Pair style {} cut: Rc must be > 1 in units of a (got {}): the bond would "
-                 "never hold", Law::style, arg[1]);
+                 "never hold", Law::style, rc);
   } else if (name == "wagner") {
-    if (narg != 1) error->all(FLERR, "Pair style {} wagner: takes no arguments", Law::style);
     if (!Law::has_inflection)
       error->all(FLERR, "Pair style {}: tail wagner needs an inflection point; the harmonic well "
                  "has none (use cut or lagunov Rc start Rs)", Law::style);
+    if (iarg < narg && utils::is_double(arg[iarg]))
+      error->all(FLERR, "Pair style {} wagner: takes no arguments (got {})", Law::style, arg[iarg]);
     tail = WAGNER;
     rc_global = 0.0;
   } else if (name == "lagunov") {
-    if (narg != 2 && narg != 4)
-      error->all(FLERR, "Pair style {} lagunov: expected Rc [start Rs]", Law::style);
     tail = LAGUNOV;
-    rc_global = positive_arg(Law::style, "lagunov Rc", arg[1], lmp);
-    if (narg == 4) {
-      if (strcmp(arg[2], "start") != 0)
-        error->all(FLERR, "Pair style {} lagunov: unknown keyword '{}' (expected start)",
-                   Law::style, arg[2]);
-      rs_global = positive_arg(Law::style, "lagunov start Rs", arg[3], lmp);
+    const char *rc = tail_number("Rc");
+    rc_global = positive_arg(Law::style, "lagunov Rc", rc, lmp);
+    if (!(rc_global > 1.0))
+      error->all(FLERR, "Pair style {} lagunov: Rc must be > 1 in units of a (got {}): the bond "
+                 "would never hold", Law::style, rc);
+    if (iarg < narg && strcmp(arg[iarg], "start") == 0) {
+      iarg++;
+      const char *rs = tail_number("Rs after start");
+      rs_global = positive_arg(Law::style, "lagunov start Rs", rs, lmp);
       if (!(rc_global > rs_global))
-        error->all(FLERR, "Pair style {} lagunov: Rc = {} must be > start Rs = {}", Law::style,
-                   arg[1], arg[3]);
+        error->all(FLERR, "Pair style {} lagunov: Rc = {} must be > start Rs = {}", Law::style, rc,
+                   rs);
     } else if (!Law::has_inflection)
       error->all(FLERR, "Pair style {}: tail lagunov needs 'start Rs'; the harmonic well has no "
                  "inflection point to start at", Law::style);
   } else
     error->all(FLERR, "Pair style {}: unknown tail '{}' (expected cut, wagner or lagunov)",
                Law::style, name);
+
+  // keywords after the tail
+  chain_n = 0;
+  while (iarg < narg) {
+    const std::string key = arg[iarg];
+    if (key != "chain")
+      error->all(FLERR, "Pair style {}: unknown keyword '{}' after tail {} (expected chain{})",
+                 Law::style, key, name, name == "lagunov" ? " or start" : "");
+    if (iarg + 1 >= narg) error->all(FLERR, "Pair style {}: keyword chain needs a value N", Law::style);
+    chain_n = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
+    if (chain_n < 1 || chain_n > MAX_CHAIN)
+      error->all(FLERR, "Pair style {}: chain N must be between 1 and {} (got {})", Law::style,
+                 MAX_CHAIN, arg[iarg + 1]);
+    iarg += 2;
+  }
+  set_chain_scale();
+
+  // as pair lj/cut resets explicitly set cutoffs, a new pair_style command resets every
+  // per-pair rc and rs to the new global values (those of one tail mean nothing to another)
+  if (allocated)
+    for (int i = 1; i <= atom->ntypes; i++)
+      for (int j = i; j <= atom->ntypes; j++) rc_pair[i][j] = rs_pair[i][j] = 0.0;
+}
+
+template <class Law> void PairSpline<Law>::set_chain_scale()
+{
+  chain_scale.assign(chain_n + 1, 0.0);
+  for (int n = 1; n <= chain_n; n++) chain_scale[n] = 1.0 / ((double) n * n);
 }
 
 /* ----------------------------------------------------------------------
@@ -248,7 +356,7 @@ template <class Law> void PairSpline<Law>::coeff(int narg, char **arg)
       if (tail == WAGNER)
         error->all(FLERR, "Pair {}: keyword rc does not apply to tail wagner (its cutoff follows "
                    "from the law)", Law::style);
-      if (tail == CUT && !(value > 1.0))
+      if (!(value > 1.0))
         error->all(FLERR, "Pair {}: rc must be > 1 in units of a (got {})", Law::style,
                    arg[iarg + 1]);
       rc_one = value;
@@ -293,6 +401,18 @@ template <class Law> void PairSpline<Law>::derive(int i, int j)
   c.kappa = kappa[i][j];
   Law::setup(c);
 
+  // the law must stay finite under deep compression, down to half the equilibrium
+  // distance (exponents such as Mie n = 1e6 overflow double precision right below a)
+  {
+    double d[4];
+    Law::derivs(c, 0.5 * c.a, d);
+    for (int k = 0; k < 4; k++)
+      if (!std::isfinite(d[k]))
+        error->all(FLERR, "Pair {}: law of types {} {} overflows at r = a/2 ({}): '{}' gives "
+                   "derivative {} = {} there", Law::style, i, j, Law::overflow_hint,
+                   Law::args(c), k, d[k]);
+  }
+
   // inflection point b and bond strength f* of the kappa-modified base
 
   double b = 0.0, pib = 0.0, fstar = 0.0;
@@ -311,9 +431,9 @@ template <class Law> void PairSpline<Law>::derive(int i, int j)
   } else if (tail == WAGNER) {
     const double disc = 16.0 + 24.0 * pib / (b * fstar);
     if (disc < 0.0)
-      error->all(FLERR, "Pair {}: tail wagner has no cutoff for types {} {}: 16 + 24 Pi(b)/(b f*) "
-                 "= {:.6g} < 0 (the well is too wide; Morse needs alpha a >= 1.557)", Law::style,
-                 i, j, disc);
+      error->all(FLERR, "Pair {}: tail wagner has no cutoff for types {} {} ({}): the well is "
+                 "too wide, 16 + 24 Pi(b)/(b f*) = {:.6g} < 0", Law::style, i, j,
+                 Law::wide_well_hint, disc);
     const double b2 = b * b;
     c.bsq = b2;
     c.acsq = b2 * (5.0 - sqrt(disc));
@@ -356,7 +476,11 @@ template <class Law> void PairSpline<Law>::init_style()
   kappa_any = 0;
   for (int i = 1; i <= atom->ntypes; i++)
     for (int j = i; j <= atom->ntypes; j++)
-      if (setflag[i][j] && kappa[i][j] != 1.0) kappa_any = 1;
+      if (setflag[i][j]) {
+        if (kappa[i][j] != 1.0) kappa_any = 1;
+        derive(i, j);
+      }
+  check_skin();
 }
 
 template <class Law> double PairSpline<Law>::init_one(int i, int j)
@@ -430,8 +554,7 @@ template <class Law> void PairSpline<Law>::read_restart_settings(FILE *fp)
   }
   MPI_Bcast(&tail, 1, MPI_INT, 0, world);
   MPI_Bcast(&chain_n, 1, MPI_INT, 0, world);
-  chain_scale.assign(chain_n + 1, 0.0);
-  for (int n = 1; n <= chain_n; n++) chain_scale[n] = 1.0 / ((double) n * n);
+  set_chain_scale();
   MPI_Bcast(&rc_global, 1, MPI_DOUBLE, 0, world);
   MPI_Bcast(&rs_global, 1, MPI_DOUBLE, 0, world);
   MPI_Bcast(&offset_flag, 1, MPI_INT, 0, world);

@@ -92,8 +92,13 @@ namespace ClusterDyn {
     int kappa_any;              // some pair has kappa != 1: use the general kernel
     int chain_n;                // chain N: pairs up to N apart in atom ID, Pi(r/n); 0 = off
     std::vector<double> chain_scale;    // 1/n^2 for n = 0..N (0 for n = 0)
+    static constexpr int MAX_CHAIN = 1000;
+    int step_warned;            // the time-step warning was given (once per pair style)
 
     void allocate();
+    void set_chain_scale();
+    void check_time_step();    // on steps that rebuilt the neighbor list (doc: time step)
+    void check_skin() const;
     void derive(int i, int j);    // checks and fills coeffs for i,j; errors name the pair
     const SplineCoeff &pair_coeff(int itype, int jtype) const
     {

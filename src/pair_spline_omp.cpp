@@ -9,9 +9,11 @@
 #include "comm.h"
 #include "force.h"
 #include "neigh_list.h"
+#include "neighbor.h"
 #include "suffix.h"
 
 #include <cmath>
+#include <exception>
 
 #include "omp_compat.h"
 
@@ -31,9 +33,10 @@ template <class Law> void PairSplineOMP<Law>::compute(int eflag, int vflag)
   const int nall = this->atom->nlocal + this->atom->nghost;
   const int nthreads = this->comm->nthreads;
   const int inum = this->list->inum;
+  std::exception_ptr failure;    // an error of a thread, raised after the parallel region
 
 #if defined(_OPENMP)
-#pragma omp parallel LMP_DEFAULT_NONE LMP_SHARED(eflag, vflag)
+#pragma omp parallel LMP_DEFAULT_NONE LMP_SHARED(eflag, vflag, failure)
 #endif
   {
     int ifrom, ito, tid;
@@ -41,13 +44,22 @@ template <class Law> void PairSplineOMP<Law>::compute(int eflag, int vflag)
     ThrData *thr = fix->get_thr(tid);
     thr->timer(Timer::START);
     ev_setup_thr(eflag, vflag, nall, this->eatom, this->vatom, nullptr, thr);
-    this->dispatch(eflag, [&](auto t, auto mode, auto ev, auto e, auto n) {
-      eval<decltype(t)::value, decltype(mode)::value, decltype(ev)::value, decltype(e)::value,
-           decltype(n)::value>(ifrom, ito, thr);
-    });
+    try {
+      this->dispatch(eflag, [&](auto t, auto mode, auto ev, auto e, auto n) {
+        eval<decltype(t)::value, decltype(mode)::value, decltype(ev)::value, decltype(e)::value,
+             decltype(n)::value>(ifrom, ito, thr);
+      });
+    } catch (...) {    // an exception must not leave an OpenMP region (std::terminate)
+#if defined(_OPENMP)
+#pragma omp critical(clusterdyn_pair_spline_failure)
+#endif
+      if (!failure) failure = std::current_exception();
+    }
     thr->timer(Timer::PAIR);
     reduce_thr(this, eflag, vflag, thr);
   }
+  if (failure) std::rethrow_exception(failure);
+  if (this->neighbor->ago == 0) this->check_time_step();
 }
 
 template <class Law>
@@ -88,7 +100,7 @@ void PairSplineOMP<Law>::eval(int iifrom, int iito, ThrData *const thr)
       double scale = 1.0;    // chain: the n-th neighbour along the chain feels Pi(r/n)
       if (CHAIN) {
         const tagint n = tag[i] > tag[j] ? tag[i] - tag[j] : tag[j] - tag[i];
-        if (n > this->chain_n) continue;
+        if (n == 0 || n > this->chain_n) continue;    // n = 0: a periodic image of atom i
         scale = this->chain_scale[n];
       }
       const double rsq_law = CHAIN ? rsq * scale : rsq;

@@ -7,9 +7,11 @@
      setup()       constants of the force kernel (SplineCoeff::c1..c3)
      inflection()  b of the unmodified base (Pi''(b) = 0, b > a), or 0 if there is none
      derivs()      Pi, Pi', Pi'', Pi''' of the unmodified base at argument s
+     wide_well_hint, overflow_hint   what to change when the wagner tail has no
+                   cutoff or the law overflows (error messages)
      eval<KAPPA>() energy and fpair = f(r)/r of the kappa-modified base at rsq;
                    KAPPA = false is the fast path used when every kappa is 1
-   Formulas: doc/pair_spline.rst and ../shared/spec/potentials.md, sections 1 and 2.
+   Formulas: doc/pair_spline.rst (Krivtsov & Krivtsova 2002, sections 1 and 2).
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_CLUSTERDYN_SPLINE_LAWS_H
@@ -72,6 +74,8 @@ namespace ClusterDyn {
     static constexpr bool kappa_kernel = false;    // kappa folds into alpha
     static constexpr bool singular = false;
     static constexpr bool has_inflection = true;
+    static constexpr const char *wide_well_hint = "Morse needs kappa alpha a >= 1.557";
+    static constexpr const char *overflow_hint = "alpha a must be below about 700";
 
     static void read(char **arg, SplineCoeff &c, LAMMPS *lmp) { read_d_alpha_a(style, arg, c, lmp); }
     static std::string args(const SplineCoeff &c) { return args_d_alpha_a(c); }
@@ -109,6 +113,8 @@ namespace ClusterDyn {
     static constexpr bool kappa_kernel = false;    // kappa folds into the stiffness
     static constexpr bool singular = false;
     static constexpr bool has_inflection = false;
+    static constexpr const char *wide_well_hint = "";
+    static constexpr const char *overflow_hint = "D alpha^2 a^2 is too large";
 
     static void read(char **arg, SplineCoeff &c, LAMMPS *lmp) { read_d_alpha_a(style, arg, c, lmp); }
     static std::string args(const SplineCoeff &c) { return args_d_alpha_a(c); }
@@ -147,6 +153,8 @@ namespace ClusterDyn {
     static constexpr bool kappa_kernel = true;
     static constexpr bool singular = true;
     static constexpr bool has_inflection = true;
+    static constexpr const char *wide_well_hint = "raise kappa or the exponents n, m";
+    static constexpr const char *overflow_hint = "the exponents n and m must be below about 1000";
 
     static void read(char **arg, SplineCoeff &c, LAMMPS *lmp)
     {
@@ -206,6 +214,8 @@ namespace ClusterDyn {
     static constexpr bool kappa_kernel = true;
     static constexpr bool singular = true;
     static constexpr bool has_inflection = true;
+    static constexpr const char *wide_well_hint = "raise kappa";
+    static constexpr const char *overflow_hint = "D is too large for double precision";
 
     static void read(char **arg, SplineCoeff &c, LAMMPS *lmp)
     {

@@ -23,19 +23,27 @@ def evaluate(lmp, extra="", cid="d"):
     return vec, per
 
 
-def gas(lmp, n=400, box=10.0, seed=7, mass="mass 1 1.0"):
-    lmp.commands_list(["units lj", "atom_modify map array", f"region box block 0 {box} 0 {box} 0 {box}",
-                       "create_box 1 box", f"create_atoms 1 random {n} {seed} NULL overlap 0.5", mass,
-                       "pair_style lj/cut 1.4", "pair_coeff * * 1.0 1.0", "neighbor 0.3 bin"])
+def gas(lmp, n=400, box=10.0, seed=7, mass="mass 1 1.0", atom_map=True):
+    lmp.commands_list(without_map([
+        "units lj", "atom_modify map array", f"region box block 0 {box} 0 {box} 0 {box}",
+        "create_box 1 box", f"create_atoms 1 random {n} {seed} NULL overlap 0.5", mass,
+        "pair_style lj/cut 1.4", "pair_coeff * * 1.0 1.0", "neighbor 0.3 bin"], atom_map))
 
 
+def without_map(commands, atom_map):
+    """The commands, without `atom_modify map array` unless atom_map: compute dust builds
+    what it needs itself, as compute cluster/atom does."""
+    return [c for c in commands if atom_map or c != "atom_modify map array"]
+
+
+@pytest.mark.parametrize("atom_map", [True, False], ids=["map", "nomap"])
 @pytest.mark.parametrize("scene", ["gas", "fractured"])
-def test_partition_equals_cluster_atom(scene):
+def test_partition_equals_cluster_atom(scene, atom_map):
     with session() as lmp:
         if scene == "gas":
-            gas(lmp)
+            gas(lmp, atom_map=atom_map)
         else:
-            lmp.commands_list(FRACTURED)
+            lmp.commands_list(without_map(FRACTURED, atom_map))
         lmp.commands_list(["compute ca all cluster/atom 1.4" if scene == "gas"
                            else "compute ca all cluster/atom 1.25", "dump 1 all custom 1 /dev/null c_ca"])
         vec, per = evaluate(lmp)
@@ -189,11 +197,14 @@ def test_bad_setups():
             lmp.command("run 0")
 
 
+@pytest.mark.parametrize("atom_map", [True, False], ids=["map", "nomap"])
 @pytest.mark.parametrize("nprocs", [1, 2, 4])
-def test_ring_through_processor_and_periodic_boundaries_is_one_fragment(tmp_path, nprocs):
+def test_ring_through_processor_and_periodic_boundaries_is_one_fragment(tmp_path, nprocs, atom_map):
     """A chain along x that crosses every processor boundary and closes through the periodic
-    one, plus one loose atom: two fragments on any number of processors."""
-    lines = [f"plugin load {PLUGIN}", "units lj", "atom_modify map array", "processors * 1 1",
+    one, plus one loose atom: two fragments on any number of processors, with or without an
+    atom map (images of one atom are joined by ID either way)."""
+    lines = [f"plugin load {PLUGIN}", "units lj", "atom_modify map array" if atom_map else "",
+             "processors * 1 1",
              "region box block 0 36 0 4 0 4", "create_box 1 box", "mass 1 1.0",
              "pair_style zero 1.0", "pair_coeff * *", "neighbor 0.3 bin"]
     lines += [f"create_atoms 1 single {0.45 + 0.9 * k!r} 2 2 units box" for k in range(40)]

@@ -41,7 +41,8 @@ def closed_form(law, m=1.0):
 def params(pair_style, pair_coeff, extra="", mass=1.0, commands=()):
     with session() as lmp:
         lmp.commands_list(["units lj", "region box block 0 6 0 6 0 6", "create_box 1 box",
-                           f"mass 1 {mass}", f"pair_style {pair_style}", f"pair_coeff 1 1 {pair_coeff}",
+                           f"mass 1 {mass}", "neighbor 0.0 nsq", "atom_modify sort 0 0.0", f"pair_style {pair_style}",
+                           f"pair_coeff 1 1 {pair_coeff}",
                            *commands, f"compute p all pair/params 1 1 {extra}",
                            "thermo_style custom step c_p[1]", "run 0 post no"])
         vec = dict(zip(NAMES, lmp.numpy.extract_compute("p", 0, 1)[:20].copy()))
@@ -195,13 +196,27 @@ def test_harmonic_shock_table_is_linear():
     assert table[0][2] == pytest.approx(1.0, rel=1e-12)
 
 
+def test_harmonic_shock_table_at_or_above_c0_is_a_nan_row():
+    """No steady compression when u >= c0 for the harmonic well: the whole row after u is NaN
+    (it was y NaN but a finite c(u), T_min and time step, which a script would have used)."""
+    values, table = params("harmonic/spline cut 1.2", "1.0 5.0 1.0 ", "u 0.5 20.0")
+    assert 20.0 >= values["v0"]
+    assert table[1][0] == 20.0 and np.all(np.isnan(table[1][1:]))
+    assert np.all(np.isfinite(table[0]))
+
+
 BAD = [
     ("pair/params 1", "expected compute ID group pair/params I J"),
     ("pair/params 1 3", "atom type 3 is out of range 1-1"),
     ("pair/params 0 1", "atom type 0 is out of range"),
     ("pair/params 1 1 lattice hcp", "unknown lattice 'hcp'"),
-    ("pair/params 1 1 u -5", "loading speed u must be > 0"),
-    ("pair/params 1 1 u", "keyword u needs speeds"),
+    ("pair/params 1 1 u -5", "loading speed u must be a finite number > 0 \\(got -5\\)"),
+    ("pair/params 1 1 u nan", "loading speed u must be a finite number > 0 \\(got nan\\)"),
+    ("pair/params 1 1 u 1 inf", "loading speed u must be a finite number > 0 \\(got inf\\)"),
+    ("pair/params 1 1 u", "keyword u needs at least one speed \\(got nothing\\)"),
+    ("pair/params 1 1 u junk", "keyword u needs at least one speed \\(got 'junk'\\)"),
+    ("pair/params 1 1 u 1 2 junk", "unknown keyword 'junk'"),
+    ("pair/params 1 1 mass", "keyword mass needs a value"),
     ("pair/params 1 1 mass 0", "mass must be > 0"),
     ("pair/params 1 1 rc -1", "rc must be > 0"),
     ("pair/params 1 1 speed 3", "unknown keyword 'speed'"),

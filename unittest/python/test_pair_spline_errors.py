@@ -6,7 +6,8 @@ from conftest import session
 BAD_SETTINGS = [
     ("morse/spline", "", "missing tail"),
     ("morse/spline", "spline 1.2", "unknown tail 'spline'"),
-    ("morse/spline", "cut", "expected one argument Rc"),
+    ("morse/spline", "cut", "cut: expected a number Rc \\(got nothing\\)"),
+    ("morse/spline", "cut chain 2", "cut: expected a number Rc \\(got 'chain'\\)"),
     ("morse/spline", "cut 1.0", "Rc must be > 1"),
     ("morse/spline", "cut 0.8", "Rc must be > 1"),
     ("lj/spline", "wagner 1.5", "takes no arguments"),
@@ -15,8 +16,13 @@ BAD_SETTINGS = [
     ("morse/spline", "lagunov -1", "lagunov Rc must be > 0"),
     ("harmonic/spline", "wagner", "tail wagner needs an inflection point"),
     ("harmonic/spline", "lagunov 1.3", "needs 'start Rs'"),
-    ("morse/spline", "cut 1.2 chain 0", "chain N must be >= 1"),
-    ("morse/spline", "cut 1.2 chain", "expected one argument Rc"),
+    ("morse/spline", "cut 1.2 chain 0", "chain N must be between 1 and 1000 \\(got 0\\)"),
+    ("morse/spline", "cut 1.2 chain 2147483647", "chain N must be between 1 and 1000"),
+    ("morse/spline", "cut 1.2 chain", "keyword chain needs a value N"),
+    ("morse/spline", "cut 1.2 junk 3", "unknown keyword 'junk' after tail cut \\(expected chain\\)"),
+    ("morse/spline", "wagner chain", "keyword chain needs a value N"),
+    ("morse/spline", "lagunov 1.0", "lagunov: Rc must be > 1"),
+    ("morse/spline", "lagunov 0.9 start 0.5", "lagunov: Rc must be > 1"),
 ]
 
 BAD_COEFFS = [  # pair_style, pair_coeff args, message
@@ -33,9 +39,14 @@ BAD_COEFFS = [  # pair_style, pair_coeff args, message
     ("morse/spline cut 1.2", "1.0 6.0 1.0 kappa", "keyword kappa needs a value"),
     ("morse/spline cut 1.2", "1.0 6.0 1.0 gamma 2", "unknown pair_coeff keyword 'gamma'"),
     ("morse/spline cut 1.2", "1.0 6.0 1.0 rc 0.9", "rc must be > 1"),
+    ("morse/spline lagunov 1.3", "1.0 6.0 1.0 rc 0.9", "rc must be > 1"),
+    ("mie/spline cut 1.2", "1.0 1.0 1e6 6", "law of types 1 1 overflows at r = a/2 \\(the exponents n and m must be below"),
+    ("mie/spline cut 1.2", "1.0 1.0 1e6 999999", "overflows at r = a/2"),
+    ("morse/spline cut 1.2", "1.0 2000 1.0", "overflows at r = a/2 \\(alpha a must be below about 700"),
+    ("lj/spline wagner", "1.0 1.0 kappa 0.1", "wagner has no cutoff for types 1 1 \\(raise kappa\\)"),
     ("morse/spline wagner", "1.0 6.0 1.0 rc 1.3", "rc does not apply to tail wagner"),
     ("morse/spline cut 1.2", "1.0 6.0 1.0 rs 1.1", "rs applies only to tail lagunov"),
-    ("morse/spline wagner", "1.0 1.2 1.0", "tail wagner has no cutoff for types 1 1"),
+    ("morse/spline wagner", "1.0 1.2 1.0", "tail wagner has no cutoff for types 1 1 \\(Morse needs kappa alpha a"),
     ("morse/spline lagunov 1.05", "1.0 6.0 1.0", "lagunov Rc = 1.05 a must be > its start"),
     ("mie/spline lagunov 1.3", "1.0 1.0 12 6 rs 1.4", "must be > its start Rs = 1.4"),
 ]
