@@ -1,9 +1,14 @@
 #!/usr/bin/python3
-"""Calibrate a cluster-dynamics pair law from macroscopic data (Krivtsov, section 8; spec
-potentials.md section 6) and write a potentials/ parameter set (*.cd include file).
+r"""Calibrate a cluster-dynamics pair law from macroscopic data and write a potentials/
+parameter set (a *.cd include file) in the LAMMPS unit style named by --units.
 
     tools/cd_calibrate.py --density 2700 --sound-speed 6420 --spall-speed 1500 \
         --size 1e-5 --lattice fcc --law morse --name al-10um > potentials/al-10um.cd
+
+The data are always SI (kg/m^3, m/s, m); --units (default si) names the unit style of the
+numbers written: si, cgs, real, metal, electron, micro, nano, or lj (reduced units in
+which the cluster size a, the cluster mass m and the bond depth D are 1).
+Method: Krivtsov & Krivtsova (2002), section 8; doc/compute_pair_params.rst.
 
 Relations, for a close-packed lattice of dimension d (chain 1, tri 2, fcc 3) with
 nearest-neighbour interaction: cell volume V0 = sqrt(5 - d)/2 a^d, particle mass
@@ -17,6 +22,39 @@ import math
 import sys
 
 LATTICES = {"chain": (1, 1.0), "tri": (2, 1.06), "fcc": (3, 1.10)}
+
+# SI value of the unit of mass, length and energy of each LAMMPS unit style (LAMMPS's
+# documentation of the units command; electron's velocities are Bohr/fs in LAMMPS's constants)
+AVOGADRO = 6.02214076e23
+UNITS = {
+    "si": (1.0, 1.0, 1.0),
+    "cgs": (1e-3, 1e-2, 1e-7),
+    "real": (1e-3 / AVOGADRO, 1e-10, 4184.0 / AVOGADRO),
+    "metal": (1e-3 / AVOGADRO, 1e-10, 1.602176634e-19),
+    "electron": (1.66053906660e-27, 5.29177210903e-11, 4.3597447222071e-18),
+    "micro": (1e-15, 1e-6, 1e-15),
+    "nano": (1e-21, 1e-9, 1e-21),
+}
+
+
+def in_units(p, units):
+    """The parameter set p (SI, from calibrate()) with its numbers in the LAMMPS unit style
+    units; lj: a, m and D are the units of length, mass and energy."""
+    if units == "lj":
+        mass, length, energy = p["m"], p["a"], p["D"]
+    elif units in UNITS:
+        mass, length, energy = UNITS[units]
+    else:
+        raise ValueError(f"unknown units '{units}' (expected {', '.join(UNITS)} or lj)")
+    d, a, m = p["D"] / energy, p["a"] / length, p["m"] / mass
+    law = p["law"]
+    if law["name"] == "morse":
+        coeff = f"{d!r} {p['kv'] / a!r} {a!r} kappa 1"
+    elif law["name"] == "lj":
+        coeff = f"{d!r} {a!r} kappa {law['kappa']!r}"
+    else:
+        coeff = f"{d!r} {a!r} {law['n']!r} {law['m']!r} kappa {law['kappa']!r}"
+    return dict(p, coeff=coeff, m=m, a=a, D=d, units=units)
 
 
 def calibrate(density, sound_speed, spall_speed, size, lattice, law="morse", n=12.0, m=6.0):
@@ -39,22 +77,24 @@ def calibrate(density, sound_speed, spall_speed, size, lattice, law="morse", n=1
     c = mass * (v0 / size) ** 2
     depth = c * size ** 2 / (2 * kv ** 2)
     if law == "morse":
-        style, coeff = "morse/spline", f"{depth!r} {kv / size!r} {size!r} kappa 1"
+        style, shape = "morse/spline", {"name": "morse"}
     elif law == "lj":
-        style, coeff = "lj/spline", f"{depth!r} {size!r} kappa {kv / 6.0!r}"
+        style, shape = "lj/spline", {"name": "lj", "kappa": kv / 6.0}
     elif law == "mie":
-        style, coeff = "mie/spline", f"{depth!r} {size!r} {n!r} {m!r} kappa {kv / math.sqrt(n * m / 2)!r}"
+        style, shape = "mie/spline", {"name": "mie", "n": n, "m": m, "kappa": kv / math.sqrt(n * m / 2)}
     else:
         raise ValueError(f"unknown law '{law}' (expected morse, lj or mie)")
-    return {"style": style, "coeff": coeff, "m": mass, "a": size, "D": depth, "C": c,
-            "kv": kv, "v0": v0, "vd": math.sqrt(2 * depth / mass)}
+    p = {"style": style, "law": shape, "m": mass, "a": size, "D": depth, "C": c, "kv": kv,
+         "v0": v0, "vd": math.sqrt(2 * depth / mass)}
+    return in_units(p, "si")
 
 
-def include_file(p, name, units, inputs):
+def include_file(p, name, inputs):
     return "\n".join([
-        f"# {name}: calibrated by tools/cd_calibrate.py from {inputs}",
-        f"# C = {p['C']:.6g}, kv = {p['kv']:.6g}, v0 = {p['v0']:.6g}, vd = {p['vd']:.6g}",
-        f"variable pot_units string {units}",
+        f"# {name}: calibrated by tools/cd_calibrate.py from {inputs} (SI)",
+        f"# SI: C = {p['C']:.6g} N/m, kv = {p['kv']:.6g}, v0 = {p['v0']:.6g} m/s, "
+        f"vd = {p['vd']:.6g} m/s; the numbers below are in units {p['units']}",
+        f"variable pot_units string {p['units']}",
         f"variable pot_style string {p['style']}",
         f'variable pot_coeff string "{p["coeff"]}"',
         f"variable pot_m     equal  {p['m']!r}",
@@ -62,26 +102,29 @@ def include_file(p, name, units, inputs):
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[1])
-    ap.add_argument("--density", type=float, required=True, help="mass per volume (area, length)")
-    ap.add_argument("--sound-speed", type=float, required=True, help="longitudinal sound speed v_l")
-    ap.add_argument("--spall-speed", type=float, required=True, help="spall (minimum impactor) speed")
-    ap.add_argument("--size", type=float, required=True, help="cluster size = equilibrium distance a")
+    ap = argparse.ArgumentParser(description=__doc__,
+                                 formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--density", type=float, required=True,
+                    help="mass per volume, kg/m^3 (per area kg/m^2 for tri, per length kg/m for chain)")
+    ap.add_argument("--sound-speed", type=float, required=True, help="longitudinal sound speed v_l, m/s")
+    ap.add_argument("--spall-speed", type=float, required=True, help="spall (minimum impactor) speed, m/s")
+    ap.add_argument("--size", type=float, required=True, help="cluster size = equilibrium distance a, m")
     ap.add_argument("--lattice", required=True, help="chain, tri or fcc")
     ap.add_argument("--law", default="morse", help="morse (default), lj or mie")
     ap.add_argument("--n", type=float, default=12.0, help="Mie repulsive exponent")
     ap.add_argument("--m", type=float, default=6.0, help="Mie attractive exponent")
-    ap.add_argument("--units", default="si", help="LAMMPS units of the numbers (default si)")
+    ap.add_argument("--units", default="si",
+                    help="LAMMPS unit style of the numbers written (default si; lj: reduced by a, m, D)")
     ap.add_argument("--name", default="calibrated", help="name for the header")
     args = ap.parse_args(argv)
     try:
-        p = calibrate(args.density, args.sound_speed, args.spall_speed, args.size, args.lattice,
-                      args.law, args.n, args.m)
+        p = in_units(calibrate(args.density, args.sound_speed, args.spall_speed, args.size,
+                               args.lattice, args.law, args.n, args.m), args.units)
     except ValueError as err:
         sys.exit(f"cd_calibrate: {err}")
     inputs = (f"density {args.density}, v_l {args.sound_speed}, v_spall {args.spall_speed}, "
               f"a {args.size}, lattice {args.lattice}, law {args.law}")
-    sys.stdout.write(include_file(p, args.name, args.units, inputs))
+    sys.stdout.write(include_file(p, args.name, inputs))
 
 
 if __name__ == "__main__":
