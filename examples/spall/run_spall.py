@@ -1,6 +1,6 @@
 #!/usr/bin/python3
-"""Spall thresholds against the dissociation speed vd = sqrt(2D/m) (Krivtsov; spec
-cluster-dynamics.md section 5) on in.spall, for Morse (aluminium clusters, alpha a = 3.76;
+"""Spall thresholds against the dissociation speed vd = sqrt(2D/m) (Krivtsov & Krivtsova
+2002, doc/references.rst) on in.spall, for Morse (aluminium clusters, alpha a = 3.76;
 alpha a = 6) and Lennard-Jones on fcc, and the aluminium clusters on the 2D triangular lattice.
 
     source build/env.sh; /usr/bin/python3 examples/spall/run_spall.py

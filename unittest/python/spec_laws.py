@@ -1,4 +1,4 @@
-"""The spec's formulas (../shared/spec/potentials.md, sections 1-3) written out
+"""The laws' formulas (Krivtsov & Krivtsova 2002, restated in doc/pair_spline.rst) written out
 independently of the plugin: base laws, the kappa modification, the inflection point,
 the Wagner and Lagunov tails, and the same law as a `pair_style lepton` expression."""
 import math
