@@ -9,6 +9,7 @@
 #include "version.h"
 
 #include "pair_spline_omp.h"
+#include "register_pair.h"
 
 #include <string>
 
@@ -17,26 +18,14 @@ using namespace ClusterDyn;
 
 namespace {
 
-template <class T> Pair *create_pair(LAMMPS *lmp)
-{
-  return new T(lmp);
-}
-
 template <class Law>
 void register_pair_omp(void *lmp, void *handle, lammpsplugin_regfunc register_plugin)
 {
   static const std::string name = std::string(Law::style) + "/omp";    // LAMMPS keeps the pointers
   static const std::string info = std::string("cluster-dynamics pair style ") + Law::style +
       " with OpenMP threads";
-  lammpsplugin_t plugin;
-  plugin.version = LAMMPS_VERSION;
-  plugin.style = "pair";
-  plugin.name = name.c_str();
-  plugin.info = info.c_str();
-  plugin.author = "cluster-dynamics plugin developers";
-  plugin.creator.v1 = (lammpsplugin_factory1 *) &create_pair<PairSplineOMP<Law>>;
-  plugin.handle = handle;
-  (*register_plugin)(&plugin, lmp);
+  register_pair_class<PairSplineOMP<Law>>(name.c_str(), info.c_str(), lmp, handle,
+                                           register_plugin);
 }
 
 }    // namespace

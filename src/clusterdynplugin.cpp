@@ -13,6 +13,7 @@
 #include "compute_pair_params.h"
 #include "fix_viscous_relative.h"
 #include "pair_spline.h"
+#include "register_pair.h"
 
 #include "comm.h"
 #include "info.h"
@@ -31,25 +32,11 @@ using namespace ClusterDyn;
 
 namespace {
 
-template <class T> Pair *create_pair(LAMMPS *lmp)
-{
-  return new T(lmp);
-}
-
 template <class Law>
 void register_pair(void *lmp, void *handle, lammpsplugin_regfunc register_plugin)
 {
-  lammpsplugin_t plugin;
-  plugin.version = LAMMPS_VERSION;
-  plugin.style = "pair";
-  plugin.author = "cluster-dynamics plugin developers";
-  plugin.handle = handle;
-  // LAMMPS keeps these pointers: one static copy per style
   static const std::string info = std::string("cluster-dynamics pair style ") + Law::style;
-  plugin.name = Law::style;
-  plugin.info = info.c_str();
-  plugin.creator.v1 = (lammpsplugin_factory1 *) &create_pair<PairSpline<Law>>;
-  (*register_plugin)(&plugin, lmp);
+  register_pair_class<PairSpline<Law>>(Law::style, info.c_str(), lmp, handle, register_plugin);
 }
 
 // clusterdyn_omp.so from the folder of this file, if the host LAMMPS has OPENMP
