@@ -37,6 +37,7 @@ template <class Law> PairSpline<Law>::PairSpline(LAMMPS *lmp) : Pair(lmp)
   kappa_any = 0;
   chain_n = 0;
   step_warned = 0;
+  step_next_check = 0;
 }
 
 template <class Law> PairSpline<Law>::~PairSpline()
@@ -152,12 +153,15 @@ template <class Law> void PairSpline<Law>::singular_error(int i, int j, double r
    warn once when the time step exceeds what compute pair/params suggests for
    the deepest compression present: T_min/20 with T_min = pi / sqrt(ftm2v Pi''(r)/m)
    at the closest pair of each type pair (the law's argument r/n in a chain),
-   Pi'' at least C, m the smaller mass.  Called on steps that rebuilt the list.
+   Pi'' at least C, m the smaller mass.  Called on steps that rebuilt the list,
+   at every run's setup and then at most every STEP_CHECK_EVERY steps.
 ------------------------------------------------------------------------- */
 
 template <class Law> void PairSpline<Law>::check_time_step()
 {
   if (step_warned || update->whichflag != 1) return;
+  if (!update->setupflag && update->ntimestep < step_next_check) return;
+  step_next_check = update->ntimestep + STEP_CHECK_EVERY;
   const int ntp1 = atom->ntypes + 1;
   std::vector<double> rminsq(ntp1 * ntp1, BIG);
   const double *const *const x = atom->x;

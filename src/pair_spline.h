@@ -94,6 +94,8 @@ namespace ClusterDyn {
     std::vector<double> chain_scale;    // 1/n^2 for n = 0..N (0 for n = 0)
     static constexpr int MAX_CHAIN = 1000;
     int step_warned;            // the time-step warning was given (once per pair style)
+    bigint step_next_check;     // no check before this step (except at a run's setup)
+    static constexpr int STEP_CHECK_EVERY = 20;
 
     void allocate();
     void set_chain_scale();
