@@ -10,6 +10,7 @@
 #include "version.h"
 
 #include "compute_dust.h"
+#include "compute_links_atom.h"
 #include "compute_pair_params.h"
 #include "fix_viscous_relative.h"
 #include "pair_spline.h"
@@ -72,6 +73,11 @@ Compute *create_compute_dust(LAMMPS *lmp, int narg, char **arg)
   return new ComputeDust(lmp, narg, arg);
 }
 
+Compute *create_compute_links_atom(LAMMPS *lmp, int narg, char **arg)
+{
+  return new ComputeLinksAtom(lmp, narg, arg);
+}
+
 Compute *create_compute_pair_params(LAMMPS *lmp, int narg, char **arg)
 {
   return new ComputePairParams(lmp, narg, arg);
@@ -106,6 +112,11 @@ extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
   plugin.name = "dust";
   plugin.info = "fragments of the bond graph and the dust";
   plugin.creator.v2 = (lammpsplugin_factory2 *) &create_compute_dust;
+  (*register_plugin)(&plugin, lmp);
+
+  plugin.name = "links/atom";
+  plugin.info = "intact links per atom of a pair style with link L";
+  plugin.creator.v2 = (lammpsplugin_factory2 *) &create_compute_links_atom;
   (*register_plugin)(&plugin, lmp);
 
   load_omp_variants((LAMMPS *) lmp);

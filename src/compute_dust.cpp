@@ -24,6 +24,7 @@
 #include "atom.h"
 #include "comm.h"
 #include "error.h"
+#include "fix_neigh_history.h"
 #include "force.h"
 #include "memory.h"
 #include "neigh_list.h"
@@ -62,11 +63,16 @@ static std::vector<T> allgatherv(const std::vector<T> &mine, MPI_Datatype type, 
 }
 
 ComputeDust::ComputeDust(LAMMPS *lmp, int narg, char **arg) :
-    Compute(lmp, narg, arg), cutoff_user(0.0), maxsize(0), list(nullptr), nmax(0),
-    fragments(nullptr), evaluated(-1)
+    Compute(lmp, narg, arg), cutoff_user(0.0), maxsize(0), links(0), link_history(nullptr),
+    list(nullptr), nmax(0), fragments(nullptr), evaluated(-1)
 {
   for (int iarg = 3; iarg < narg; iarg += 2) {
     const std::string key = arg[iarg];
+    if (key == "links") {    // a flag: the bonds are the pair style's links
+      links = 1;
+      iarg--;
+      continue;
+    }
     if (iarg + 1 >= narg) error->all(FLERR, "Compute dust: keyword {} needs a value", key);
     if (key == "cutoff") {
       cutoff_user = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
@@ -76,8 +82,12 @@ ComputeDust::ComputeDust(LAMMPS *lmp, int narg, char **arg) :
       maxsize = utils::bnumeric(FLERR, arg[iarg + 1], false, lmp);
       if (maxsize < 1) error->all(FLERR, "Compute dust: maxsize must be >= 1 (got {})", arg[iarg + 1]);
     } else
-      error->all(FLERR, "Compute dust: unknown keyword '{}' (expected cutoff or maxsize)", key);
+      error->all(FLERR, "Compute dust: unknown keyword '{}' (expected cutoff, maxsize or links)",
+                 key);
   }
+  if (links && cutoff_user > 0.0)
+    error->all(FLERR, "Compute dust: keywords links and cutoff exclude each other (the links are "
+               "the bonds)");
 
   vector_flag = 1;
   size_vector = 6;
@@ -97,6 +107,15 @@ ComputeDust::~ComputeDust()
 void ComputeDust::init()
 {
   if (!atom->tag_enable) error->all(FLERR, "Compute dust requires atom IDs");
+  if (links) {
+    int dim;
+    link_history = force->pair ? (FixNeighHistory *) force->pair->extract("link_history", dim)
+                               : nullptr;
+    if (!link_history)
+      error->all(FLERR, "Compute dust links needs a pair style with link L (and a run or "
+                 "minimization that made the links: run 0 will do)");
+    return;
+  }
   if (cutoff_user == 0.0 && (!force->pair || !force->pair->cutsq))
     error->all(FLERR, "Compute dust: without the cutoff keyword it needs a pair style, whose "
                "cutoffs are the bond distances");
@@ -156,8 +175,10 @@ void ComputeDust::evaluate()
     array_atom = fragments;
   }
 
-  comm->forward_comm();    // current ghost positions
-  neighbor->build_one(list);
+  if (!links) {
+    comm->forward_comm();    // current ghost positions
+    neighbor->build_one(list);
+  }
 
   const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
   const tagint *tag = atom->tag;
@@ -181,14 +202,25 @@ void ComputeDust::evaluate()
       if (!seen.second) parent[find(i)] = find(seen.first->second);
     }
   }
-  for (int ii = 0; ii < list->inum; ii++) {
-    const int i = list->ilist[ii];
+  // bonds: pairs closer than the bond distance, or (links) the pair style's intact links,
+  // the flags fix neigh/history keeps for the pair style's neighbor list
+  const NeighList *bonds = links ? link_history->pair->list : list;
+  int *const *const linked = links ? link_history->firstflag : nullptr;
+  if (links && !linked)
+    error->all(FLERR, "Compute dust links: the links are not made yet (they are at the setup of "
+               "the first run or minimization: run 0 will do)");
+  for (int ii = 0; ii < bonds->inum; ii++) {
+    const int i = bonds->ilist[ii];
     if (!(mask[i] & groupbit)) continue;
-    for (int jj = 0; jj < list->numneigh[i]; jj++) {
-      const int j = list->firstneigh[i][jj] & NEIGHMASK;
+    for (int jj = 0; jj < bonds->numneigh[i]; jj++) {
+      const int j = bonds->firstneigh[i][jj] & NEIGHMASK;
       if (!(mask[j] & groupbit)) continue;
-      const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
-      if (dx * dx + dy * dy + dz * dz >= cutsq[type[i] * ntp1 + type[j]]) continue;
+      if (links) {
+        if (!linked[i][jj]) continue;
+      } else {
+        const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
+        if (dx * dx + dy * dy + dz * dz >= cutsq[type[i] * ntp1 + type[j]]) continue;
+      }
       const int ri = find(i), rj = find(j);
       if (ri != rj) parent[std::max(ri, rj)] = std::min(ri, rj);
     }

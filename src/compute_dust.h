@@ -11,6 +11,7 @@
 #include <vector>
 
 namespace LAMMPS_NS {
+class FixNeighHistory;
 namespace ClusterDyn {
 
   class ComputeDust : public Compute {
@@ -28,6 +29,8 @@ namespace ClusterDyn {
    private:
     double cutoff_user;        // 0: the pair style's cutoff of each type pair
     bigint maxsize;            // 0: every fragment but the largest is dust
+    int links;                 // bonds = the pair style's links (link L), not distances
+    LAMMPS_NS::FixNeighHistory *link_history;    // holds the link flags (links)
     std::vector<double> cutsq; // (ntypes+1)^2 bond distance squared
     class NeighList *list;
     int nmax;

@@ -112,7 +112,7 @@ ComputePairParams::~ComputePairParams()
 void ComputePairParams::init()
 {
   if (!force->pair) error->all(FLERR, "Compute pair/params needs a pair style");
-  if (!force->pair->single_enable)
+  if (!force->pair->single_enable && !dynamic_cast<LawSource *>(force->pair))
     error->all(FLERR, "Compute pair/params: pair style {} has no single() to evaluate its law",
                force->pair_style);
   if (!(force->pair->cutsq[itype][jtype] > 0.0))

@@ -10,11 +10,16 @@
 #include "atom.h"
 #include "comm.h"
 #include "error.h"
+#include "fix_dummy.h"
+#include "fix_neigh_history.h"
 #include "force.h"
 #include "math_const.h"
 #include "memory.h"
+#include "modify.h"
 #include "neigh_list.h"
+#include "neigh_request.h"
 #include "neighbor.h"
+#include "output.h"
 #include "update.h"
 
 #include <cmath>
@@ -38,11 +43,18 @@ template <class Law> PairSpline<Law>::PairSpline(LAMMPS *lmp) : Pair(lmp)
   chain_n = 0;
   step_warned = 0;
   step_next_check = 0;
+  link_l = 0.0;
+  relink = links_made = 0;
+  fix_history = nullptr;
+  beyond_contact = 1;    // fix neigh/history keeps every listed pair's flag, not only contacts
 }
 
 template <class Law> PairSpline<Law>::~PairSpline()
 {
   if (copymode) return;
+  if (fix_history) modify->delete_fix(LINK_FIX_ID);
+  else if (link_l > 0.0) modify->delete_fix(std::string(LINK_FIX_ID) + "_DUMMY");
+  delete[] pvector;
   if (allocated) {
     memory->destroy(setflag);
     memory->destroy(cutsq);
@@ -64,19 +76,61 @@ template <class Law> PairSpline<Law>::~PairSpline()
 template <class Law> void PairSpline<Law>::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
+  LinkTally pass;
   dispatch(eflag, [&](auto t, auto mode, auto ev, auto e, auto n) {
     eval<decltype(t)::value, decltype(mode)::value, decltype(ev)::value, decltype(e)::value,
-         decltype(n)::value>();
+         decltype(n)::value>(pass);
   });
   if (vflag_fdotr) virial_fdotr_compute();
+  if (link_l > 0.0) link_done(pass);
   if (neighbor->ago == 0) check_time_step();
+}
+
+/* ----------------------------------------------------------------------
+   link L: the pairs are linked at the setup of the first run (or
+   minimization) after the pair style is defined; relink yes links pairs on
+   every step
+------------------------------------------------------------------------- */
+
+template <class Law> int PairSpline<Law>::linking_now() const
+{
+  if (!links_made && update->setupflag) return LINK_INITIAL;
+  return relink ? LINK_RELINK : LINK_KEEP;
+}
+
+template <class Law> void PairSpline<Law>::link_done(const LinkTally &pass)
+{
+  if (!links_made && update->setupflag) links_made = 1;
+  link_total.broken += pass.broken;
+  link_total.formed += pass.formed;
+  link_total.ejump += pass.ejump;
+  // a restart file written at the end of this step carries the global totals
+  if (output->restart_flag && output->next_restart == update->ntimestep) consolidate_link_total();
+  pvector[0] = link_total.broken;
+  pvector[1] = link_total.formed;
+  pvector[2] = link_total.ejump;
+}
+
+template <class Law> void PairSpline<Law>::consolidate_link_total()
+{
+  double mine[3] = {link_total.broken, link_total.formed, link_total.ejump}, all[3];
+  MPI_Allreduce(mine, all, 3, MPI_DOUBLE, MPI_SUM, world);
+  link_total = LinkTally();
+  if (comm->me == 0) {
+    link_total.broken = all[0];
+    link_total.formed = all[1];
+    link_total.ejump = all[2];
+  }
 }
 
 template <class Law>
 template <int TAIL, int MODE, int EVFLAG, int EFLAG, int NEWTON_PAIR>
-void PairSpline<Law>::eval()
+void PairSpline<Law>::eval(LinkTally &links)
 {
-  constexpr bool KAPPA = MODE != PLAIN;
+  constexpr bool KAPPA = mode_kappa(MODE);
+  constexpr bool LINKED = mode_link(MODE);
+  int *const *const touch = LINKED ? fix_history->firstflag : nullptr;
+  const int linking = LINKED ? linking_now() : LINK_KEEP;
   const tagint *_noalias const tag = atom->tag;
   const auto *_noalias const x = (xyz3 *) atom->x[0];
   auto *_noalias const f = (xyz3 *) atom->f[0];
@@ -114,22 +168,28 @@ void PairSpline<Law>::eval()
         scale = chain_scale[n];
       }
       const double rsq_law = MODE == CHAIN ? rsq * scale : rsq;
-      if (rsq_law < c.cutsq) {
+      double e, fpair;
+      if (LINKED) {
+        const double w = NEWTON_PAIR || j < nlocal ? 1.0 : 0.5;
+        if (rsq <= c.hardsq) singular_error(i, j, rsq);
+        if (!link_eval<TAIL, KAPPA, Law>(c, rsq, touch[i][jj], linking, w, links, e, fpair))
+          continue;
+      } else {
+        if (rsq_law >= c.cutsq) continue;
         if (rsq_law <= c.hardsq) singular_error(i, j, rsq);
-        double fpair;
-        const double e = tail_eval<TAIL, KAPPA, Law>(c, rsq_law, fpair);
-        fpair *= factor_lj * scale;
-        fxtmp += delx * fpair;
-        fytmp += dely * fpair;
-        fztmp += delz * fpair;
-        if (NEWTON_PAIR || j < nlocal) {
-          f[j].x -= delx * fpair;
-          f[j].y -= dely * fpair;
-          f[j].z -= delz * fpair;
-        }
-        if (EFLAG) evdwl = factor_lj * (e - c.offset);
-        if (EVFLAG) ev_tally(i, j, nlocal, NEWTON_PAIR, evdwl, 0.0, fpair, delx, dely, delz);
+        e = tail_eval<TAIL, KAPPA, Law>(c, rsq_law, fpair) - c.offset;
       }
+      fpair *= factor_lj * scale;
+      fxtmp += delx * fpair;
+      fytmp += dely * fpair;
+      fztmp += delz * fpair;
+      if (NEWTON_PAIR || j < nlocal) {
+        f[j].x -= delx * fpair;
+        f[j].y -= dely * fpair;
+        f[j].z -= delz * fpair;
+      }
+      if (EFLAG) evdwl = factor_lj * e;
+      if (EVFLAG) ev_tally(i, j, nlocal, NEWTON_PAIR, evdwl, 0.0, fpair, delx, dely, delz);
     }
     f[i].x += fxtmp;
     f[i].y += fytmp;
@@ -302,19 +362,37 @@ template <class Law> void PairSpline<Law>::settings(int narg, char **arg)
 
   // keywords after the tail
   chain_n = 0;
+  double new_l = 0.0;
+  int relink_set = -1;
   while (iarg < narg) {
     const std::string key = arg[iarg];
-    if (key != "chain")
-      error->all(FLERR, "Pair style {}: unknown keyword '{}' after tail {} (expected chain{})",
-                 Law::style, key, name, name == "lagunov" ? " or start" : "");
-    if (iarg + 1 >= narg) error->all(FLERR, "Pair style {}: keyword chain needs a value N", Law::style);
-    chain_n = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
-    if (chain_n < 1 || chain_n > MAX_CHAIN)
-      error->all(FLERR, "Pair style {}: chain N must be between 1 and {} (got {})", Law::style,
-                 MAX_CHAIN, arg[iarg + 1]);
+    if (key != "chain" && key != "link" && key != "relink")
+      error->all(FLERR, "Pair style {}: unknown keyword '{}' after tail {} (expected chain, link "
+                 "or relink{})", Law::style, key, name, name == "lagunov" ? " or start" : "");
+    if (iarg + 1 >= narg)
+      error->all(FLERR, "Pair style {}: keyword {} needs a value", Law::style, key);
+    if (key == "chain") {
+      chain_n = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
+      if (chain_n < 1 || chain_n > MAX_CHAIN)
+        error->all(FLERR, "Pair style {}: chain N must be between 1 and {} (got {})", Law::style,
+                   MAX_CHAIN, arg[iarg + 1]);
+    } else if (key == "link") {
+      new_l = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (!(new_l >= 1.0))
+        error->all(FLERR, "Pair style {}: link L must be >= 1 in units of a (got {}): pairs "
+                   "closer than L a are linked", Law::style, arg[iarg + 1]);
+    } else
+      relink_set = utils::logical(FLERR, arg[iarg + 1], false, lmp);
     iarg += 2;
   }
+  if (relink_set >= 0 && new_l == 0.0)
+    error->all(FLERR, "Pair style {}: relink needs link L", Law::style);
+  if (chain_n && new_l > 0.0)
+    error->all(FLERR, "Pair style {}: link and chain N do not combine (chain N fixes the "
+               "neighbours by atom ID already)", Law::style);
   set_chain_scale();
+  link_settings_changed(new_l);
+  relink = relink_set > 0;
 
   // as pair lj/cut resets explicitly set cutoffs, a new pair_style command resets every
   // per-pair rc and rs to the new global values (those of one tail mean nothing to another)
@@ -327,6 +405,32 @@ template <class Law> void PairSpline<Law>::set_chain_scale()
 {
   chain_scale.assign(chain_n + 1, 0.0);
   for (int n = 1; n <= chain_n; n++) chain_scale[n] = 1.0 / ((double) n * n);
+}
+
+/* ----------------------------------------------------------------------
+   link L on: a dummy fix holds the place of fix neigh/history in the fix
+   list until init_style() (as the granular styles do); off again: refused,
+   the links would be lost silently
+------------------------------------------------------------------------- */
+
+template <class Law> void PairSpline<Law>::link_settings_changed(double new_l)
+{
+  const std::string dummy = std::string(LINK_FIX_ID) + "_DUMMY";
+  const bool mine = link_l > 0.0;
+  if (mine && new_l == 0.0)
+    error->all(FLERR, "Pair style {}: link cannot be switched off once set (the link state "
+               "would be lost); use pair_style none first", Law::style);
+  if (!mine && new_l > 0.0) {
+    if (modify->get_fix_by_id(LINK_FIX_ID) || modify->get_fix_by_id(dummy))
+      error->all(FLERR, "Pair style {}: another pair style already keeps links (fix {}); one "
+                 "linked pair style at a time", Law::style, LINK_FIX_ID);
+    if (!atom->tag_enable) error->all(FLERR, "Pair style {}: link needs atom IDs", Law::style);
+    modify->add_fix(dummy + " all DUMMY");
+    nextra = 3;
+    pvector = new double[nextra]();
+  }
+  link_l = new_l;
+  single_enable = born_matrix_enable = link_l > 0.0 ? 0 : 1;    // they cannot see the state
 }
 
 /* ----------------------------------------------------------------------
@@ -465,6 +569,16 @@ template <class Law> void PairSpline<Law>::derive(int i, int j)
     Law::derivs(c, c.kappa * (c.rc - c.a) + c.a, d);
     c.offset = d[0];
   }
+  if (link_l > 0.0) {
+    if (link_l * c.a > c.rc)
+      error->all(FLERR, "Pair {}: link L = {} is beyond the tail end of types {} {} ({:.6g} a): a "
+                 "pair linked there would break at once", Law::style, link_l, i, j, c.rc / c.a);
+    c.linksq = link_l * link_l * c.a * c.a;
+    c.asq = c.a * c.a;
+    double f;
+    c.ea = Law::template eval<true>(c, c.asq, f);
+    c.ebreak = tail == CUT ? Law::template eval<true>(c, c.cutsq, f) - c.offset : 0.0;
+  }
   if (Law::singular && c.kappa > 1.0) {    // in the chain: r/n at or inside that distance
     const double rh = c.a * (1.0 - 1.0 / c.kappa);
     c.hardsq = rh * rh;
@@ -476,7 +590,17 @@ template <class Law> void PairSpline<Law>::derive(int i, int j)
 
 template <class Law> void PairSpline<Law>::init_style()
 {
-  neighbor->add_request(this);
+  if (link_l > 0.0) {
+    neighbor->add_request(this, NeighConst::REQ_HISTORY);
+    if (!fix_history) {
+      fix_history = dynamic_cast<FixNeighHistory *>(modify->replace_fix(
+          std::string(LINK_FIX_ID) + "_DUMMY", std::string(LINK_FIX_ID) + " all NEIGH_HISTORY 1",
+          0));    // not NEIGH_HISTORY/omp: it ignores beyond_contact and keeps contacts only
+      fix_history->pair = this;
+    }
+    consolidate_link_total();
+  } else
+    neighbor->add_request(this);
   kappa_any = 0;
   for (int i = 1; i <= atom->ntypes; i++)
     for (int j = i; j <= atom->ntypes; j++)
@@ -544,10 +668,16 @@ template <class Law> void PairSpline<Law>::write_restart_settings(FILE *fp)
   fwrite(&offset_flag, sizeof(int), 1, fp);
   fwrite(&mix_flag, sizeof(int), 1, fp);
   fwrite(&chain_n, sizeof(int), 1, fp);
+  fwrite(&link_l, sizeof(double), 1, fp);
+  fwrite(&relink, sizeof(int), 1, fp);
+  fwrite(&links_made, sizeof(int), 1, fp);
+  const double total[3] = {link_total.broken, link_total.formed, link_total.ejump};
+  fwrite(total, sizeof(double), 3, fp);
 }
 
 template <class Law> void PairSpline<Law>::read_restart_settings(FILE *fp)
 {
+  double new_l = 0.0, total[3] = {0.0, 0.0, 0.0};
   if (comm->me == 0) {
     utils::sfread(FLERR, &tail, sizeof(int), 1, fp, nullptr, error);
     utils::sfread(FLERR, &rc_global, sizeof(double), 1, fp, nullptr, error);
@@ -555,6 +685,19 @@ template <class Law> void PairSpline<Law>::read_restart_settings(FILE *fp)
     utils::sfread(FLERR, &offset_flag, sizeof(int), 1, fp, nullptr, error);
     utils::sfread(FLERR, &mix_flag, sizeof(int), 1, fp, nullptr, error);
     utils::sfread(FLERR, &chain_n, sizeof(int), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &new_l, sizeof(double), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &relink, sizeof(int), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &links_made, sizeof(int), 1, fp, nullptr, error);
+    utils::sfread(FLERR, total, sizeof(double), 3, fp, nullptr, error);
+  }
+  MPI_Bcast(&new_l, 1, MPI_DOUBLE, 0, world);
+  MPI_Bcast(&relink, 1, MPI_INT, 0, world);
+  MPI_Bcast(&links_made, 1, MPI_INT, 0, world);
+  link_settings_changed(new_l);
+  if (comm->me == 0) {    // the totals stay on processor 0 (consolidate_link_total)
+    link_total.broken = total[0];
+    link_total.formed = total[1];
+    link_total.ejump = total[2];
   }
   MPI_Bcast(&tail, 1, MPI_INT, 0, world);
   MPI_Bcast(&chain_n, 1, MPI_INT, 0, world);
@@ -689,6 +832,8 @@ void PairSpline<Law>::born_matrix(int, int, int itype, int jtype, double rsq, do
 
 template <class Law> void *PairSpline<Law>::extract(const char *str, int &dim)
 {
+  dim = 0;
+  if (strcmp(str, "link_history") == 0) return (void *) fix_history;    // compute links/atom, dust
   dim = 2;
   if (strcmp(str, "D") == 0) return (void *) d0;
   if (strcmp(str, "a") == 0) return (void *) a0;

@@ -5,8 +5,9 @@
    PairSpline<Law> holds what every law shares: the tail (cut, wagner,
    lagunov), the kappa modification, coefficients, restart, data files,
    single(), born_matrix() and extract().  The force loop is compiled per
-   tail and per mode (every kappa 1, some kappa != 1, chain N), so a scene
-   pays only for what it uses.
+   tail and per mode (every kappa 1, some kappa != 1, chain N, link L), so a
+   scene pays only for what it uses.  With link L the pair state (linked or
+   not) is the flag fix neigh/history keeps per neighbour pair.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_CLUSTERDYN_PAIR_SPLINE_H
@@ -22,6 +23,7 @@
 #include <vector>
 
 namespace LAMMPS_NS {
+class FixNeighHistory;
 namespace ClusterDyn {
 
   enum Tail { CUT = 0, WAGNER = 1, LAGUNOV = 2 };
@@ -51,6 +53,47 @@ namespace ClusterDyn {
       return e * m * m;
     }
     return Law::template eval<KAPPA>(c, rsq, fpair);
+  }
+
+  // link L: what the state changes of one kernel pass add up to (a pair with a ghost
+  // counts 1/2 with newton off, as both processors see it)
+  struct LinkTally {
+    double broken = 0.0;    // links broken
+    double formed = 0.0;    // links formed by relink
+    double ejump = 0.0;     // sum of the pair-energy jumps of those changes
+  };
+  enum Linking { LINK_KEEP = 0, LINK_INITIAL = 1, LINK_RELINK = 2 };
+
+  // energy (shifted) and fpair of a pair under the link model, updating its state;
+  // false when the pair does not interact.  Linked: the full law and tail up to Rc a,
+  // where the link breaks for good.  Unlinked: the repulsive branch r < a, zero at a.
+  template <int TAIL, bool KAPPA, class Law>
+  inline bool link_eval(const SplineCoeff &c, double rsq, int &linked, int linking, double w,
+                        LinkTally &t, double &e, double &fpair)
+  {
+    if (linked) {
+      if (rsq >= c.cutsq) {
+        linked = 0;
+        t.broken += w;
+        t.ejump -= w * c.ebreak;
+        return false;
+      }
+    } else if (linking != LINK_KEEP && rsq < c.linksq) {
+      linked = 1;
+      if (linking == LINK_RELINK) {
+        double f;
+        const double eu = rsq < c.asq ? Law::template eval<KAPPA>(c, rsq, f) - c.ea : 0.0;
+        t.formed += w;
+        t.ejump += w * (tail_eval<TAIL, KAPPA, Law>(c, rsq, f) - c.offset - eu);
+      }
+    }
+    if (linked) {
+      e = tail_eval<TAIL, KAPPA, Law>(c, rsq, fpair) - c.offset;
+      return true;
+    }
+    if (rsq >= c.asq) return false;
+    e = Law::template eval<KAPPA>(c, rsq, fpair) - c.ea;
+    return true;
   }
 
   template <class Law> class PairSpline : public Pair, public LawSource {
@@ -97,6 +140,18 @@ namespace ClusterDyn {
     bigint step_next_check;     // no check before this step (except at a run's setup)
     static constexpr int STEP_CHECK_EVERY = 20;
 
+    // link L (0 = off): pair state kept by fix neigh/history, its flag per neighbour pair
+    double link_l;
+    int relink;                          // unlinked pairs closer than L a link again
+    int links_made;                      // the first run's setup has linked the pairs
+    LAMMPS_NS::FixNeighHistory *fix_history;  // replaces the dummy fix at the first init
+    LinkTally link_total;                // this processor's share since the links were made
+    static constexpr const char *LINK_FIX_ID = "NEIGH_HISTORY_LINK";
+    int linking_now() const;             // Linking of this compute() call
+    void link_done(const LinkTally &pass);
+    void link_settings_changed(double new_l);
+    void consolidate_link_total();       // every processor's share onto processor 0
+
     void allocate();
     void set_chain_scale();
     void check_time_step();    // on steps that rebuilt the neighbor list (doc: time step)
@@ -109,13 +164,16 @@ namespace ClusterDyn {
     [[noreturn]] void singular_error(int i, int j, double rsq) const;
     std::string data_args(int i, int j) const;
 
-    // kernel variants: PLAIN (every kappa 1), KAPPA (some kappa != 1), CHAIN (chain N)
-    enum Mode { PLAIN = 0, KAPPA = 1, CHAIN = 2 };
+    // kernel variants: PLAIN (every kappa 1), KAPPA (some kappa != 1), CHAIN (chain N),
+    // LINK and LINK_KAPPA (link L)
+    enum Mode { PLAIN = 0, KAPPA = 1, CHAIN = 2, LINK = 3, LINK_KAPPA = 4 };
+    static constexpr bool mode_kappa(int mode) { return mode != PLAIN && mode != LINK; }
+    static constexpr bool mode_link(int mode) { return mode == LINK || mode == LINK_KAPPA; }
     // calls run(tail, mode, evflag, eflag, newton_pair) with compile-time constants
     template <class Run> void dispatch(int eflag, Run &&run) const;
 
    private:
-    template <int TAIL, int MODE, int EVFLAG, int EFLAG, int NEWTON_PAIR> void eval();
+    template <int TAIL, int MODE, int EVFLAG, int EFLAG, int NEWTON_PAIR> void eval(LinkTally &);
   };
 
   template <class Law>
@@ -141,8 +199,12 @@ namespace ClusterDyn {
     auto with_tail = [&](auto t) {
       if (chain_n) return with_kappa(t, std::integral_constant<int, CHAIN>());
       if constexpr (Law::kappa_kernel) {
-        if (kappa_any) return with_kappa(t, std::integral_constant<int, KAPPA>());
+        if (kappa_any) {
+          if (link_l > 0.0) return with_kappa(t, std::integral_constant<int, LINK_KAPPA>());
+          return with_kappa(t, std::integral_constant<int, KAPPA>());
+        }
       }
+      if (link_l > 0.0) return with_kappa(t, std::integral_constant<int, LINK>());
       with_kappa(t, std::integral_constant<int, PLAIN>());
     };
     if (tail == CUT) with_tail(std::integral_constant<int, CUT>());

@@ -7,6 +7,7 @@
 
 #include "atom.h"
 #include "comm.h"
+#include "fix_neigh_history.h"
 #include "force.h"
 #include "neigh_list.h"
 #include "neighbor.h"
@@ -34,9 +35,10 @@ template <class Law> void PairSplineOMP<Law>::compute(int eflag, int vflag)
   const int nthreads = this->comm->nthreads;
   const int inum = this->list->inum;
   std::exception_ptr failure;    // an error of a thread, raised after the parallel region
+  LinkTally pass;
 
 #if defined(_OPENMP)
-#pragma omp parallel LMP_DEFAULT_NONE LMP_SHARED(eflag, vflag, failure)
+#pragma omp parallel LMP_DEFAULT_NONE LMP_SHARED(eflag, vflag, failure, pass)
 #endif
   {
     int ifrom, ito, tid;
@@ -44,10 +46,11 @@ template <class Law> void PairSplineOMP<Law>::compute(int eflag, int vflag)
     ThrData *thr = fix->get_thr(tid);
     thr->timer(Timer::START);
     ev_setup_thr(eflag, vflag, nall, this->eatom, this->vatom, nullptr, thr);
+    LinkTally mine;
     try {
       this->dispatch(eflag, [&](auto t, auto mode, auto ev, auto e, auto n) {
         eval<decltype(t)::value, decltype(mode)::value, decltype(ev)::value, decltype(e)::value,
-             decltype(n)::value>(ifrom, ito, thr);
+             decltype(n)::value>(ifrom, ito, thr, mine);
       });
     } catch (...) {    // an exception must not leave an OpenMP region (std::terminate)
 #if defined(_OPENMP)
@@ -55,19 +58,31 @@ template <class Law> void PairSplineOMP<Law>::compute(int eflag, int vflag)
 #endif
       if (!failure) failure = std::current_exception();
     }
+#if defined(_OPENMP)
+#pragma omp critical(clusterdyn_pair_spline_links)
+#endif
+    {
+      pass.broken += mine.broken;
+      pass.formed += mine.formed;
+      pass.ejump += mine.ejump;
+    }
     thr->timer(Timer::PAIR);
     reduce_thr(this, eflag, vflag, thr);
   }
   if (failure) std::rethrow_exception(failure);
+  if (this->link_l > 0.0) this->link_done(pass);
   if (this->neighbor->ago == 0) this->check_time_step();
 }
 
 template <class Law>
 template <int TAIL, int MODE, int EVFLAG, int EFLAG, int NEWTON_PAIR>
-void PairSplineOMP<Law>::eval(int iifrom, int iito, ThrData *const thr)
+void PairSplineOMP<Law>::eval(int iifrom, int iito, ThrData *const thr, LinkTally &links)
 {
-  constexpr bool KAPPA = MODE != PairSpline<Law>::PLAIN;
+  constexpr bool KAPPA = PairSpline<Law>::mode_kappa(MODE);
   constexpr bool CHAIN = MODE == PairSpline<Law>::CHAIN;
+  constexpr bool LINKED = PairSpline<Law>::mode_link(MODE);
+  int *const *const touch = LINKED ? this->fix_history->firstflag : nullptr;
+  const int linking = LINKED ? this->linking_now() : LINK_KEEP;
   const tagint *_noalias const tag = this->atom->tag;
   const auto *_noalias const x = (xyz3 *) this->atom->x[0];
   auto *_noalias const f = (xyz3 *) thr->get_f()[0];
@@ -104,23 +119,29 @@ void PairSplineOMP<Law>::eval(int iifrom, int iito, ThrData *const thr)
         scale = this->chain_scale[n];
       }
       const double rsq_law = CHAIN ? rsq * scale : rsq;
-      if (rsq_law < c.cutsq) {
+      double e, fpair;
+      if (LINKED) {
+        const double w = NEWTON_PAIR || j < nlocal ? 1.0 : 0.5;
+        if (rsq <= c.hardsq) this->singular_error(i, j, rsq);
+        if (!link_eval<TAIL, KAPPA, Law>(c, rsq, touch[i][jj], linking, w, links, e, fpair))
+          continue;
+      } else {
+        if (rsq_law >= c.cutsq) continue;
         if (rsq_law <= c.hardsq) this->singular_error(i, j, rsq);
-        double fpair;
-        const double e = tail_eval<TAIL, KAPPA, Law>(c, rsq_law, fpair);
-        fpair *= factor_lj * scale;
-        fxtmp += delx * fpair;
-        fytmp += dely * fpair;
-        fztmp += delz * fpair;
-        if (NEWTON_PAIR || j < nlocal) {
-          f[j].x -= delx * fpair;
-          f[j].y -= dely * fpair;
-          f[j].z -= delz * fpair;
-        }
-        if (EFLAG) evdwl = factor_lj * (e - c.offset);
-        if (EVFLAG)
-          ev_tally_thr(this, i, j, nlocal, NEWTON_PAIR, evdwl, 0.0, fpair, delx, dely, delz, thr);
+        e = tail_eval<TAIL, KAPPA, Law>(c, rsq_law, fpair) - c.offset;
       }
+      fpair *= factor_lj * scale;
+      fxtmp += delx * fpair;
+      fytmp += dely * fpair;
+      fztmp += delz * fpair;
+      if (NEWTON_PAIR || j < nlocal) {
+        f[j].x -= delx * fpair;
+        f[j].y -= dely * fpair;
+        f[j].z -= delz * fpair;
+      }
+      if (EFLAG) evdwl = factor_lj * e;
+      if (EVFLAG)
+        ev_tally_thr(this, i, j, nlocal, NEWTON_PAIR, evdwl, 0.0, fpair, delx, dely, delz, thr);
     }
     f[i].x += fxtmp;
     f[i].y += fytmp;

@@ -21,7 +21,7 @@ namespace ClusterDyn {
 
    private:
     template <int TAIL, int MODE, int EVFLAG, int EFLAG, int NEWTON_PAIR>
-    void eval(int ifrom, int ito, ThrData *const thr);
+    void eval(int ifrom, int ito, ThrData *const thr, LinkTally &links);
   };
 
 }    // namespace ClusterDyn

@@ -18,7 +18,7 @@ LMP = os.environ["CLUSTERDYN_LMP"]
 PAIR_STYLES = [s + v for s in ("morse/spline", "lj/spline", "mie/spline", "harmonic/spline")
                for v in ("", "/omp")]
 FIX_STYLES = ["viscous/relative"]
-COMPUTE_STYLES = ["dust", "pair/params"]
+COMPUTE_STYLES = ["dust", "links/atom", "pair/params"]
 
 
 def load_plugin(lmp, path=PLUGIN):

@@ -1,0 +1,94 @@
+/* ----------------------------------------------------------------------
+   Cluster-dynamics plugin for LAMMPS: compute links/atom.
+
+   Per atom, the number of intact links under a pair style with link L: the
+   flags that fix neigh/history keeps for the pair style's half neighbor
+   list, counted for both atoms of a link (a reverse communication adds the
+   ghosts' counts to their owners with newton on), as compute coord/atom
+   counts neighbours.
+------------------------------------------------------------------------- */
+
+#include "compute_links_atom.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "error.h"
+#include "fix_neigh_history.h"
+#include "force.h"
+#include "memory.h"
+#include "neigh_list.h"
+#include "pair.h"
+#include "update.h"
+
+using namespace LAMMPS_NS;
+using namespace ClusterDyn;
+
+ComputeLinksAtom::ComputeLinksAtom(LAMMPS *lmp, int narg, char **arg) :
+    Compute(lmp, narg, arg), link_history(nullptr), nmax(0), count(nullptr)
+{
+  if (narg != 3) error->all(FLERR, "Compute links/atom takes no arguments (got {})", narg - 3);
+  peratom_flag = 1;
+  size_peratom_cols = 0;
+  comm_reverse = 1;
+}
+
+ComputeLinksAtom::~ComputeLinksAtom()
+{
+  memory->destroy(count);
+}
+
+void ComputeLinksAtom::init()
+{
+  int dim;
+  link_history =
+      force->pair ? (FixNeighHistory *) force->pair->extract("link_history", dim) : nullptr;
+  if (!link_history) error->all(FLERR, "Compute links/atom needs a pair style with link L");
+}
+
+void ComputeLinksAtom::compute_peratom()
+{
+  invoked_peratom = update->ntimestep;
+  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
+  if (atom->nmax > nmax) {
+    memory->destroy(count);
+    nmax = atom->nmax;
+    memory->create(count, nmax, "links/atom:count");
+    vector_atom = count;
+  }
+  for (int i = 0; i < nall; i++) count[i] = 0.0;
+
+  int *const *const linked = link_history->firstflag;
+  const NeighList *list = link_history->pair->list;
+  const int newton_pair = force->newton_pair;
+  if (linked) {    // nullptr before the first run made the links
+    for (int ii = 0; ii < list->inum; ii++) {
+      const int i = list->ilist[ii];
+      for (int jj = 0; jj < list->numneigh[i]; jj++) {
+        if (!linked[i][jj]) continue;
+        const int j = list->firstneigh[i][jj] & NEIGHMASK;
+        count[i] += 1.0;
+        if (newton_pair || j < nlocal) count[j] += 1.0;
+      }
+    }
+  }
+  if (newton_pair) comm->reverse_comm(this);
+  const int *mask = atom->mask;
+  for (int i = 0; i < nlocal; i++)
+    if (!(mask[i] & groupbit)) count[i] = 0.0;
+}
+
+int ComputeLinksAtom::pack_reverse_comm(int n, int first, double *buf)
+{
+  for (int k = 0; k < n; k++) buf[k] = count[first + k];
+  return n;
+}
+
+void ComputeLinksAtom::unpack_reverse_comm(int n, int *list, double *buf)
+{
+  for (int k = 0; k < n; k++) count[list[k]] += buf[k];
+}
+
+double ComputeLinksAtom::memory_usage()
+{
+  return (double) nmax * sizeof(double);
+}

@@ -1,0 +1,326 @@
+"""Linked pairs (pair_style ... link L [relink yes]): a link breaks exactly at Rc a and never
+attracts again, unlinked pairs only repel (the law's branch r < a, zero at a), the state
+follows atoms across 1/2/4 ranks, /omp and newton off, survives restart, and the energy of the
+breaks closes the balance.  Oracles: the Morse closed form, compute coord/atom (stock) for the
+links made, serial against MPI runs, the nearest-neighbour chain (chain 1)."""
+import math
+import os
+import re
+import sys
+
+import numpy as np
+import pytest
+from conftest import PLUGIN, run_lmp, session
+
+D, ALPHA, A = 1.0, 6.0, 1.0    # Morse in lj units
+
+
+def morse(r):
+    """Energy and force (-dE/dr) of the Morse law."""
+    e = math.exp(-ALPHA * (r - A))
+    return D * (e * e - 2 * e), 2 * ALPHA * D * (e * e - e)
+
+
+def dimer(lmp, style="morse/spline cut 1.3 link 1.05", r=1.0):
+    lmp.commands_list(["units lj", "atom_modify map array", "region box block -5 5 -5 5 -5 5",
+                       "create_box 1 box", "mass 1 1.0", "create_atoms 1 single 0 0 0",
+                       f"create_atoms 1 single {r} 0 0", f"pair_style {style}",
+                       f"pair_coeff * * {D} {ALPHA} {A}", "neighbor 0.3 bin"])
+    if "link" in style:
+        lmp.commands_list(["compute p all pair morse/spline", "compute l all links/atom",
+                           "thermo_style custom step pe c_p[1] c_p[2] c_p[3]",
+                           "thermo_modify norm no"])
+
+
+def at(lmp, r):
+    """Move atom 2 to distance r and evaluate (run 0: setup, the state updates)."""
+    lmp.command(f"set atom 2 x {r!r}")
+    lmp.command("run 0")
+    f = lmp.numpy.extract_atom("f")[:2].copy()
+    ids = lmp.numpy.extract_atom("id")[:2]
+    fx2 = f[list(ids).index(2), 0]
+    links = lmp.numpy.extract_compute("l", 1, 1)[:2].copy()
+    return lmp.get_thermo("pe"), fx2, links, [lmp.extract_compute("p", 0, 1)[k] for k in range(3)]
+
+
+def test_link_holds_up_to_rc_and_breaks_exactly_there():
+    with session() as lmp:
+        dimer(lmp)
+        for r in (1.0, 1.1, 1.2, 1.3 * (1 - 1e-12)):
+            pe, fx, links, tally = at(lmp, r)
+            e, f = morse(r)
+            assert pe == pytest.approx(e, rel=1e-12) and fx == pytest.approx(f, rel=1e-12)
+            assert list(links) == [1, 1] and tally == [0, 0, 0]
+        pe, fx, links, tally = at(lmp, 1.3)    # r = Rc a exactly: broken
+        assert pe == 0 and fx == 0 and list(links) == [0, 0]
+        assert tally[0] == 1 and tally[1] == 0
+        assert tally[2] == pytest.approx(-morse(1.3)[0], rel=1e-12)    # the jump at Rc a
+
+
+def test_broken_link_never_attracts_and_repels_on_contact():
+    with session() as lmp:
+        dimer(lmp)
+        at(lmp, 1.0)
+        at(lmp, 1.5)    # break
+        for r in (1.29, 1.1, 1.04, 1.0 + 1e-9):
+            pe, fx, links, _ = at(lmp, r)
+            assert pe == 0 and fx == 0 and list(links) == [0, 0]
+        for r in (0.99, 0.95, 0.9):    # contact: the law's repulsive branch, zero energy at a
+            pe, fx, links, tally = at(lmp, r)
+            e, f = morse(r)
+            assert fx == pytest.approx(f, rel=1e-12) and fx > 0
+            assert pe == pytest.approx(e + D, rel=1e-10) and list(links) == [0, 0]
+        assert tally[0] == 1
+
+
+def test_pairs_never_linked_only_repel():
+    with session() as lmp:
+        dimer(lmp, r=1.1)    # beyond L a = 1.05 a at the first run: never linked
+        pe, fx, links, _ = at(lmp, 1.1)
+        assert pe == 0 and fx == 0 and list(links) == [0, 0]
+        pe, fx, _, _ = at(lmp, 0.97)
+        assert fx == pytest.approx(morse(0.97)[1], rel=1e-12) and pe == pytest.approx(morse(0.97)[0] + D)
+
+
+def test_relink_welds_closer_than_l_and_tallies_the_jump():
+    with session() as lmp:
+        dimer(lmp, "morse/spline cut 1.3 link 1.05 relink yes")
+        at(lmp, 1.0)
+        at(lmp, 1.4)
+        pe, fx, links, tally = at(lmp, 1.06)    # unlinked beyond L a: nothing
+        assert pe == 0 and list(links) == [0, 0]
+        pe, fx, links, tally = at(lmp, 1.04)    # welded
+        e, f = morse(1.04)
+        assert list(links) == [1, 1] and pe == pytest.approx(e) and fx == pytest.approx(f)
+        assert tally[0] == 1 and tally[1] == 1
+        assert tally[2] == pytest.approx(-morse(1.3)[0] + e, rel=1e-12)
+
+
+def test_initial_links_are_the_pairs_closer_than_l_as_coord_atom_counts():
+    with session() as lmp:
+        lmp.commands_list(["units lj", "atom_modify map array", "lattice fcc 1.41421356",
+                           "region box block 0 4 0 4 0 4", "create_box 1 box",
+                           "create_atoms 1 box", "mass 1 1.0",
+                           "displace_atoms all random 0.04 0.04 0.04 9127 units box",
+                           "pair_style morse/spline cut 1.2 link 1.02",
+                           f"pair_coeff * * {D} {ALPHA} {A}", "neighbor 0.3 bin",
+                           "compute l all links/atom", "compute c all coord/atom cutoff 1.02",
+                           "run 0"])
+        links = lmp.numpy.extract_compute("l", 1, 1).copy()
+        coord = lmp.numpy.extract_compute("c", 1, 1).copy()
+        assert np.array_equal(links, coord) and 6 < links.mean() < 12
+
+
+HOT = """units lj
+atom_modify map array
+{newton}
+lattice fcc 1.41421356
+region box block 0 4 0 4 0 4
+create_box 1 box
+create_atoms 1 box
+mass 1 1.0
+pair_style morse/spline cut 1.2 link 1.05 {relink}
+pair_coeff * * 1.0 6.0 1.0
+{shift}
+velocity all create 3.0 4928 loop geom
+neighbor 0.2 bin
+fix 1 all nve
+timestep 0.002
+compute p all pair morse/spline
+compute l all links/atom
+compute d all dust links
+variable e equal ke+pe-c_p[3]
+thermo_style custom step ke pe v_e c_p[1] c_p[2] c_p[3] c_d[6]
+thermo_modify norm no format float %.15g
+thermo 100
+run {steps}
+write_dump all custom links.dump id c_l x y z modify sort id format float %.12g
+"""
+
+
+def numeric_rows(out, ncols=8):
+    """The thermo rows of the output: lines of ncols numbers."""
+    rows = []
+    for line in out.splitlines():
+        try:
+            row = [float(v) for v in line.split()]
+        except ValueError:
+            continue
+        if len(row) == ncols:
+            rows.append(row)
+    return np.array(rows)
+
+
+def hot(tmp_path, nprocs=1, args=(), **kw):
+    fields = dict(dict(newton="", relink="", shift="", steps=500), **kw)
+    out = run_lmp(tmp_path, f"plugin load {PLUGIN}\n" + HOT.format(**fields), nprocs, args=args)
+    return numeric_rows(out), np.loadtxt(tmp_path / "links.dump", skiprows=9)
+
+
+def test_break_energy_closes_the_balance_and_equals_the_count_times_the_jump(tmp_path):
+    rows, _ = hot(tmp_path, steps=1000)
+    broken, jumps = rows[-1, 4], rows[-1, 6]
+    assert broken > 300
+    assert jumps == pytest.approx(-broken * morse(1.2)[0], rel=1e-12)
+    drift = abs(rows[-1, 3] - rows[0, 3])
+    assert drift < 1e-3 * jumps    # measured 4e-4: ke + pe alone moves by the whole jump
+
+
+def test_shifted_cut_tail_breaks_without_energy_jump(tmp_path):
+    rows, _ = hot(tmp_path, shift="pair_modify shift yes")
+    assert rows[-1, 4] > 100 and rows[-1, 6] == 0
+
+
+@pytest.mark.parametrize("variant", [dict(nprocs=2), dict(nprocs=4), dict(newton="newton off", nprocs=2),
+                                     dict(args=("-sf", "omp", "-pk", "omp", "2")),
+                                     dict(nprocs=2, relink="relink yes")])
+def test_link_state_is_the_same_on_1_2_4_ranks_newton_off_and_omp(tmp_path, variant):
+    relink = variant.get("relink", "")
+    serial_rows, serial = hot(tmp_path, relink=relink)
+    rows, dump = hot(tmp_path, **variant)
+    assert serial_rows[-1, 4] > 100    # links did break
+    assert np.array_equal(rows[:, [0, 4, 5, 7]], serial_rows[:, [0, 4, 5, 7]])
+    assert np.allclose(rows[:, 1:4], serial_rows[:, 1:4], rtol=1e-9, atol=1e-9)
+    # atom IDs follow the decomposition (create_atoms): match the atoms by position
+    def by_position(rows):
+        return rows[np.lexsort(np.round(rows[:, 2:5], 5).T)]
+    dump, serial = by_position(dump), by_position(serial)
+    assert np.allclose(dump[:, 2:], serial[:, 2:], atol=1e-8)
+    assert np.array_equal(dump[:, 1], serial[:, 1])    # links of every atom
+
+
+RESTART_A = HOT.replace("run {steps}", "run 300\nwrite_restart links.restart\nrun 300")
+RESTART_B = """read_restart links.restart
+neighbor 0.2 bin
+fix 1 all nve
+compute p all pair morse/spline
+compute l all links/atom
+compute d all dust links
+variable e equal ke+pe-c_p[3]
+thermo_style custom step ke pe v_e c_p[1] c_p[2] c_p[3] c_d[6]
+thermo_modify norm no format float %.15g
+thermo 100
+run 300
+write_dump all custom links.dump id c_l x y z modify sort id format float %.12g
+"""
+
+
+@pytest.mark.parametrize("nprocs", [1, 2])
+def test_restart_keeps_links_and_counts(tmp_path, nprocs):
+    fields = dict(newton="", relink="", shift="", steps=0)
+    out_a = run_lmp(tmp_path, f"plugin load {PLUGIN}\n" + RESTART_A.format(**fields), nprocs)
+    dump_a = np.loadtxt(tmp_path / "links.dump", skiprows=9)
+    out_b = run_lmp(tmp_path, f"plugin load {PLUGIN}\n" + RESTART_B, 1, name="in.b")    # written on nprocs, read on 1
+    dump_b = np.loadtxt(tmp_path / "links.dump", skiprows=9)
+
+    a, b = numeric_rows(out_a)[-1], numeric_rows(out_b)[-1]
+    assert a[0] == b[0] == 600
+    assert a[4] > 100 and a[4] == b[4] and a[7] == b[7]
+    assert np.allclose(b[1:4], a[1:4], rtol=1e-9)
+    assert np.array_equal(dump_a[:, :2], dump_b[:, :2])
+
+
+def test_write_data_keeps_no_links_and_the_next_run_links_by_distance(tmp_path):
+    script = f"plugin load {PLUGIN}\n" + HOT.format(newton="", relink="", shift="", steps=300) + f"""write_data links.data
+clear
+plugin load {PLUGIN}
+atom_modify map array
+pair_style morse/spline cut 1.2 link 1.05
+read_data links.data
+neighbor 0.2 bin
+compute l all links/atom
+compute c all coord/atom cutoff 1.05
+variable diff atom abs(c_l-c_c)
+compute diff all reduce sum v_diff
+compute ls all reduce sum c_l
+thermo_style custom step c_ls c_diff
+thermo_modify norm no
+run 0
+"""
+    out = run_lmp(tmp_path, script)
+    row = numeric_rows(out, 3)[-1]
+    assert row[1] > 1000 and row[2] == 0
+
+
+def test_dust_links_counts_fragments_of_the_link_graph_not_of_distances():
+    # two fcc blocks whose closest pairs across the gap are 1.1 a apart: within Rc a = 1.2 a
+    # (one fragment by distance), beyond L a = 1.05 a (two on the link graph)
+    with session() as lmp:
+        lmp.commands_list(["units lj", "atom_modify map array", "boundary f p p",
+                           "lattice fcc 1.41421356", "region box block -1 9 0 3 0 3",
+                           "create_box 1 box", "region left block 0 3.99 0 3 0 3",
+                           "region right block 4 8 0 3 0 3", "create_atoms 1 region left",
+                           "create_atoms 1 region right", "mass 1 1.0", "group right region right",
+                           f"displace_atoms right move {(1.1 ** 2 - 0.5) ** 0.5 - 0.5 ** 0.5!r} 0 0 units box",
+                           "pair_style morse/spline cut 1.2 link 1.05",
+                           f"pair_coeff * * {D} {ALPHA} {A}", "neighbor 0.3 bin",
+                           "compute links all dust links", "compute dist all dust",
+                           "compute cl all cluster/atom 1.05", "compute nc all reduce max c_cl",
+                           "run 0"])
+        assert lmp.extract_compute("links", 0, 1)[5] == 2 and lmp.extract_compute("dist", 0, 1)[5] == 1
+        assert lmp.extract_compute("nc", 0, 0) > 1    # cluster/atom at L a: two clusters too
+
+
+CHAIN = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..", "examples", "chain-1d"))
+
+
+@pytest.mark.parametrize("var", [dict(u=2000, damp="relative"), dict(u=500, transits=0.9)])
+def test_1d_chain_with_link_105_is_the_nearest_neighbour_chain(var):
+    sys.path.insert(0, CHAIN)
+    os.environ["LAMMPS_PLUGIN_PATH"] = os.path.dirname(PLUGIN)
+    import run_study
+    chain, link = run_study.run(**var), run_study.run(link=1.05, **var)
+    assert np.array_equal(chain["x"], link["x"]) and np.array_equal(chain["v"], link["v"])
+    assert chain["detached"] == link["detached"]
+
+
+def test_no_link_no_history():
+    with session() as lmp:
+        dimer(lmp, "morse/spline cut 1.3")
+        lmp.command("run 0")
+        assert not lmp.has_id("fix", "NEIGH_HISTORY_LINK")
+        lmp.command("pair_style morse/spline cut 1.3 link 1.05")
+        lmp.commands_list([f"pair_coeff * * {D} {ALPHA} {A}", "run 0"])
+        assert lmp.has_id("fix", "NEIGH_HISTORY_LINK")
+
+
+BAD = [
+    ("pair_style morse/spline cut 1.2 link 0.9", "link L must be >= 1 in units of a \\(got 0.9\\)"),
+    ("pair_style morse/spline cut 1.2 link", "keyword link needs a value"),
+    ("pair_style morse/spline cut 1.2 relink yes", "relink needs link L"),
+    ("pair_style morse/spline cut 1.2 link 1.05 relink maybe", "Expected boolean"),
+    ("pair_style morse/spline cut 1.2 chain 2 link 1.05", "link and chain N do not combine"),
+    ("pair_style morse/spline cut 1.2 link 1.3\npair_coeff * * 1.0 6.0 1.0",
+     "link L = 1.3 is beyond the tail end of types 1 1 \\(1.2 a\\)"),
+    ("pair_style morse/spline wagner link 1.5\npair_coeff * * 1.0 6.0 1.0",
+     "link L = 1.5 is beyond the tail end of types 1 1"),
+    ("pair_style morse/spline cut 1.2 link 1.05\npair_style morse/spline cut 1.2",
+     "link cannot be switched off once set"),
+    ("pair_style hybrid morse/spline cut 1.2 link 1.05 morse/spline cut 1.3 link 1.05",
+     "another pair style already keeps links"),
+    ("pair_style morse/spline cut 1.2\npair_coeff * * 1.0 6.0 1.0\ncompute l all links/atom\nrun 0",
+     "Compute links/atom needs a pair style with link L"),
+    ("pair_style morse/spline cut 1.2\npair_coeff * * 1.0 6.0 1.0\ncompute d all dust links\nrun 0",
+     "Compute dust links needs a pair style with link L"),
+    ("compute d all dust links cutoff 1.2", "links and cutoff exclude each other"),
+    ("compute l all links/atom 3", "Compute links/atom takes no arguments"),
+]
+
+
+@pytest.mark.parametrize("commands,message", BAD)
+def test_bad_link_input_is_a_clear_error(commands, message):
+    with session() as lmp:
+        lmp.commands_list(["units lj", "region box block 0 4 0 4 0 4", "create_box 1 box",
+                           "mass 1 1.0", "create_atoms 1 single 1 1 1"])
+        *first, last = commands.split("\n")
+        lmp.commands_list(first)
+        with pytest.raises(Exception, match=message):
+            lmp.command(last)
+
+
+def test_link_needs_atom_ids():
+    with session() as lmp:
+        lmp.commands_list(["units lj", "atom_modify id no", "region box block 0 4 0 4 0 4",
+                           "create_box 1 box", "mass 1 1.0"])
+        with pytest.raises(Exception, match="link needs atom IDs"):
+            lmp.command("pair_style morse/spline cut 1.2 link 1.05")
