@@ -3,9 +3,9 @@
 
     source build/env.sh; /usr/bin/python3 examples/shock-3d/run_ensembles.py [--jobs 2] [--report]
 
-Every point is SEEDS runs that differ only in the seed of a random thermal velocity (rms 1 m/s
-per component).  Runs go two at a time (one per core) in the order of SCENES, most needed
-first; each result is cached in runs/, so an interrupted sweep continues where it stopped.
+Ensemble members differ only in the seed of a random thermal velocity (rms 1 m/s per
+component).  Runs go two at a time (one per core) in the order of phases(), most needed first;
+each result is cached in runs/, so an interrupted sweep continues where it stopped.
 --report writes ensembles.md and the plots from the cached runs only, and lists the points not
 run.
 """
@@ -27,40 +27,51 @@ GRIDS = {1.05: [200, 300, 400, 500, 600], 1.1: [400, 500, 600, 800, 1000, 1500, 
          1.2: [800, 1000, 1200, 1400, 1600, 2000, 3000], 1.3: [1600, 2000, 2500, 3000, 3500]}
 HARMONIC = [2000, 4000]
 MODELS = {"distance": {}, "link 1.05": {"link": 1.05}}
-# the distance model's brackets (its single-run thresholds, README): ensembles there first
-DISTANCE_BRACKETS = {1.05: [300, 400], 1.1: [500, 600], 1.2: [1400, 1600], 1.3: [1600, 2000]}
-SECTION4 = {1.2: [1400, 1600]}    # 4x4 section (22,656 clusters): where it fits
-TEMPERATURE = dict(rc=1.1, u=600)    # the thermal speed checked at 0.1 and 1 m/s
 
 
 def scene(model, seed, **var):
     return dict(var, **MODELS[model], seed=seed)
 
 
-def scenes():
-    """Every run, in the order they are run (most needed first)."""
-    out = []
-    for seed in SEEDS:    # one seed of every point first: the curves, then the spreads
-        for model in MODELS:
-            for rc, us in GRIDS.items():
-                for u in us:
-                    if model == "distance" and u not in DISTANCE_BRACKETS[rc] and seed > 1:
-                        continue
-                    out.append(scene(model, seed, rc=rc, u=u))
-            for u in HARMONIC:
-                out.append(scene(model, seed, rc=1.2, u=u, law="harmonic"))
-    for model in MODELS:    # 5 um against 10 um clusters on equal areas (2x2 cells of 5 um)
-        for seed in SEEDS:
-            out.append(scene(model, seed, rc=1.1, u=2000, cells=1))
-            out.append(scene(model, seed, rc=1.1, u=2000, pot="al-cluster-5um"))
-    for seed in SEEDS:
-        out.append(scene("distance", seed, vtherm=0.1, **TEMPERATURE))
-    for model in MODELS:
-        for rc, us in SECTION4.items():
-            for u in us:
-                for seed in SEEDS:
-                    out.append(scene(model, seed, rc=rc, u=u, cells=4))
+def curve(model, seed):
+    """Every grid point of one model with one seed."""
+    out = [scene(model, seed, rc=rc, u=u) for rc, us in GRIDS.items() for u in us]
+    return out + [scene(model, seed, rc=1.2, u=u, law="harmonic") for u in HARMONIC]
+
+
+def brackets(model):
+    """Per Rc, the grid speeds around the first dusting of the seed-1 curve: the last speed
+    without dust below the first with dust (None where seed 1 is not run yet)."""
+    out = {}
+    for rc, us in GRIDS.items():
+        counts = [cached(scene(model, 1, rc=rc, u=u)) for u in us]
+        if any(c is None for c in counts):
+            return None
+        first = next((k for k, c in enumerate(counts) if c["surface"] > 0), None)
+        if first is None:
+            out[rc] = [us[-1]]
+        else:
+            out[rc] = us[max(first - 1, 0):first + 1]
     return out
+
+
+def phases():
+    """The runs in the order they are run: the seed-1 curves of both models, then seeds 2-5
+    at the speeds that bracket each threshold and at the harmonic points.  (The full grid for
+    five seeds, the 4x4 section and the 5 um / 10 um comparison on equal areas do not fit the
+    session's two cores: README.)"""
+    yield curve("distance", 1) + curve("link 1.05", 1)
+    later = []
+    for seed in SEEDS[1:]:
+        for model in MODELS:
+            for rc, us in (brackets(model) or {}).items():
+                later += [scene(model, seed, rc=rc, u=u) for u in us]
+            later += [scene(model, seed, rc=1.2, u=u, law="harmonic") for u in HARMONIC]
+    yield later
+
+
+def scenes():
+    return [v for phase in phases() for v in phase]
 
 
 def cached(var):
@@ -82,12 +93,13 @@ def main():
     ap.add_argument("--report", action="store_true")
     args = ap.parse_args()
     if not args.report:
-        todo = [v for v in scenes() if cached(v) is None]
-        start = time.time()
-        with multiprocessing.Pool(args.jobs) as pool:
-            for _ in pool.imap(run_logged, todo, chunksize=1):
-                pass
-        print(f"{len(todo)} runs in {time.time() - start:.0f} s of wall time")
+        start, count = time.time(), 0
+        for phase in phases():
+            todo = [v for v in phase if cached(v) is None]
+            with multiprocessing.Pool(args.jobs) as pool:
+                for _ in pool.imap(run_logged, todo, chunksize=1):
+                    count += 1
+        print(f"{count} runs in {time.time() - start:.0f} s of wall time")
     from ensemble_report import report
     report(scenes(), cached, HERE)
 
