@@ -13,19 +13,25 @@ import pytest
 from conftest import PLUGIN, run_lmp, session
 
 D, ALPHA, A = 1.0, 6.0, 1.0    # Morse in lj units
+# the same law (alpha a = 6) in other unit styles: energy D and length a of each
+UNITS = {"lj": (1.0, 1.0), "metal": (0.3429, 2.866), "si": (2.46e-6, 1.0e-5),
+         "real": (7.9, 2.866)}
 
 
-def morse(r):
-    """Energy and force (-dE/dr) of the Morse law."""
-    e = math.exp(-ALPHA * (r - A))
-    return D * (e * e - 2 * e), 2 * ALPHA * D * (e * e - e)
+def morse(r, d=D, a=A):
+    """Energy and force (-dE/dr) of the Morse law (alpha a = 6)."""
+    alpha = ALPHA / a
+    e = math.exp(-alpha * (r - a))
+    return d * (e * e - 2 * e), 2 * alpha * d * (e * e - e)
 
 
-def dimer(lmp, style="morse/spline cut 1.3 link 1.05", r=1.0):
-    lmp.commands_list(["units lj", "atom_modify map array", "region box block -5 5 -5 5 -5 5",
-                       "create_box 1 box", "mass 1 1.0", "create_atoms 1 single 0 0 0",
-                       f"create_atoms 1 single {r} 0 0", f"pair_style {style}",
-                       f"pair_coeff * * {D} {ALPHA} {A}", "neighbor 0.3 bin"])
+def dimer(lmp, style="morse/spline cut 1.3 link 1.05", r=1.0, units="lj"):
+    d, a = UNITS[units]
+    lmp.commands_list([f"units {units}", "atom_modify map array",
+                       f"region box block {-5 * a} {5 * a} {-5 * a} {5 * a} {-5 * a} {5 * a} units box",
+                       "create_box 1 box", "mass 1 1.0", "create_atoms 1 single 0 0 0 units box",
+                       f"create_atoms 1 single {r * a} 0 0 units box", f"pair_style {style}",
+                       f"pair_coeff * * {d} {ALPHA / a} {a}", f"neighbor {0.3 * a} bin"])
     if "link" in style:
         lmp.commands_list(["compute p all pair morse/spline", "compute l all links/atom",
                            "thermo_style custom step pe c_p[1] c_p[2] c_p[3]",
@@ -33,7 +39,7 @@ def dimer(lmp, style="morse/spline cut 1.3 link 1.05", r=1.0):
 
 
 def at(lmp, r):
-    """Move atom 2 to distance r and evaluate (run 0: setup, the state updates)."""
+    """Move atom 2 to distance r (absolute) and evaluate (run 0: setup, the state updates)."""
     lmp.command(f"set atom 2 x {r!r}")
     lmp.command("run 0")
     f = lmp.numpy.extract_atom("f")[:2].copy()
@@ -43,18 +49,20 @@ def at(lmp, r):
     return lmp.get_thermo("pe"), fx2, links, [lmp.extract_compute("p", 0, 1)[k] for k in range(3)]
 
 
-def test_link_holds_up_to_rc_and_breaks_exactly_there():
+@pytest.mark.parametrize("units", list(UNITS))
+def test_link_holds_up_to_rc_and_breaks_exactly_there(units):
+    d, a = UNITS[units]
     with session() as lmp:
-        dimer(lmp)
-        for r in (1.0, 1.1, 1.2, 1.3 * (1 - 1e-12)):
-            pe, fx, links, tally = at(lmp, r)
-            e, f = morse(r)
+        dimer(lmp, units=units)
+        for x in (1.0, 1.1, 1.2, 1.3 * (1 - 1e-12)):
+            pe, fx, links, tally = at(lmp, x * a)
+            e, f = morse(x * a, d, a)
             assert pe == pytest.approx(e, rel=1e-12) and fx == pytest.approx(f, rel=1e-12)
             assert list(links) == [1, 1] and tally == [0, 0, 0]
-        pe, fx, links, tally = at(lmp, 1.3)    # r = Rc a exactly: broken
+        pe, fx, links, tally = at(lmp, 1.3 * a)    # r = Rc a exactly: broken
         assert pe == 0 and fx == 0 and list(links) == [0, 0]
         assert tally[0] == 1 and tally[1] == 0
-        assert tally[2] == pytest.approx(-morse(1.3)[0], rel=1e-12)    # the jump at Rc a
+        assert tally[2] == pytest.approx(-morse(1.3 * a, d, a)[0], rel=1e-12)    # the jump at Rc a
 
 
 def test_broken_link_never_attracts_and_repels_on_contact():
