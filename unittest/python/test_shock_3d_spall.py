@@ -47,3 +47,13 @@ def test_two_ranks_give_the_serial_dust_count(tmp_path):
 def test_spall_below_and_above_vd():
     assert not run_spall.run(0.7, "al-cluster-10um")["spall"]
     assert run_spall.run(1.5, "al-cluster-10um")["spall"]
+
+
+def test_linked_sample_two_ranks_and_thermal_seeds(tmp_path):
+    # the neighbour-fixed model (link 1.05, dust on the link graph): the serial count on two
+    # ranks at 0.2 us; a seed changes the count only through the 1 m/s thermal velocity
+    serial = shock(tmp_path, rc=1.1, u=2000, time=2e-7, link=1.05)
+    parallel = shock(tmp_path, 2, rc=1.1, u=2000, time=2e-7, link=1.05)
+    assert serial[0] > 0 and parallel[0] == serial[0]
+    seeded = [shock(tmp_path, rc=1.1, u=2000, time=2e-7, link=1.05, seed=s)[0] for s in (1, 2)]
+    assert seeded[0] != seeded[1] and all(c > 0 for c in seeded)
