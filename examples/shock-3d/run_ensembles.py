@@ -23,8 +23,10 @@ sys.path.insert(0, HERE)
 from run_sweep import PAPER_UCR, run_one  # noqa: E402
 
 SEEDS = [1, 2, 3, 4, 5]
+# the README's grids, extended down where a model dusts at the lowest speed of the old grid
 GRIDS = {1.05: [200, 300, 400, 500, 600], 1.1: [400, 500, 600, 800, 1000, 1500, 2000, 3000, 4000],
-         1.2: [800, 1000, 1200, 1400, 1600, 2000, 3000], 1.3: [1600, 2000, 2500, 3000, 3500]}
+         1.2: [400, 600, 800, 1000, 1200, 1400, 1600, 2000, 3000],
+         1.3: [800, 1200, 1600, 2000, 2500, 3000, 3500]}
 HARMONIC = [2000, 4000]
 MODELS = {"distance": {}, "link 1.05": {"link": 1.05}}
 
@@ -57,7 +59,8 @@ def brackets(model):
 
 def phases():
     """The runs in the order they are run: the seed-1 curves of both models, then seeds 2-5
-    at the speeds that bracket each threshold and at the harmonic points.  (The full grid for
+    at the speeds that bracket each threshold and at the harmonic points, then the check of
+    the thermal velocity, 5 um against 10 um clusters and the 4x4 section.  (The full grid for
     five seeds, the 4x4 section and the 5 um / 10 um comparison on equal areas do not fit the
     session's two cores: README.)"""
     yield curve("distance", 1) + curve("link 1.05", 1)
@@ -68,6 +71,25 @@ def phases():
                 later += [scene(model, seed, rc=rc, u=u) for u in us]
             later += [scene(model, seed, rc=1.2, u=u, law="harmonic") for u in HARMONIC]
     yield later
+    # does the thermal velocity move the mean?  The same points without it (seed 0: the
+    # symmetric perfect crystal) and with a ten times smaller one (0.1 m/s)
+    check = []
+    for rc, u in THERMAL_CHECK:
+        check += [scene(model, 0, rc=rc, u=u) for model in MODELS]
+        check += [scene("distance", seed, rc=rc, u=u, vtherm=0.1) for seed in SEEDS]
+    yield check
+    # 5 um against 10 um clusters on equal areas: 2x2 cells of 5 um = 1x1 cell of 10 um
+    yield [scene(model, seed, rc=1.1, u=2000, **var) for seed in SEEDS for model in MODELS
+           for var in ({"cells": 1}, {"pot": "al-cluster-5um"})]
+    # the 4x4 section (22,656 clusters) at the Rc = 1.2 brackets of each model
+    section = []
+    for model in MODELS:
+        for u in (brackets(model) or {}).get(1.2, []):
+            section += [scene(model, seed, rc=1.2, u=u, cells=4) for seed in SEEDS]
+    yield section
+
+
+THERMAL_CHECK = [(1.05, 300), (1.1, 500), (1.2, 1400)]
 
 
 def scenes():
