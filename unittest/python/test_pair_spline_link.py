@@ -119,6 +119,14 @@ def test_initial_links_are_the_pairs_closer_than_l_as_coord_atom_counts():
         assert np.array_equal(links, coord) and 6 < links.mean() < 12
 
 
+OUTPUTS = """compute p all pair morse/spline
+compute l all links/atom
+compute d all dust links
+variable e equal ke+pe-c_p[3]
+thermo_style custom step ke pe v_e c_p[1] c_p[2] c_p[3] c_d[6]
+thermo_modify norm no format float %.15g
+thermo 100
+"""
 HOT = """units lj
 atom_modify map array
 {newton}
@@ -134,14 +142,7 @@ velocity all create 3.0 4928 loop geom
 neighbor 0.2 bin
 fix 1 all nve
 timestep 0.002
-compute p all pair morse/spline
-compute l all links/atom
-compute d all dust links
-variable e equal ke+pe-c_p[3]
-thermo_style custom step ke pe v_e c_p[1] c_p[2] c_p[3] c_d[6]
-thermo_modify norm no format float %.15g
-thermo 100
-run {steps}
+{outputs}run {steps}
 write_dump all custom links.dump id c_l x y z modify sort id format float %.12g
 """
 
@@ -160,7 +161,7 @@ def numeric_rows(out, ncols=8):
 
 
 def hot(tmp_path, nprocs=1, args=(), **kw):
-    fields = dict(dict(newton="", relink="", shift="", steps=500), **kw)
+    fields = dict(dict(newton="", relink="", shift="", steps=500, outputs=OUTPUTS), **kw)
     out = run_lmp(tmp_path, f"plugin load {PLUGIN}\n" + HOT.format(**fields), nprocs, args=args)
     return numeric_rows(out), np.loadtxt(tmp_path / "links.dump", skiprows=9)
 
@@ -201,21 +202,14 @@ RESTART_A = HOT.replace("run {steps}", "run 300\nwrite_restart links.restart\nru
 RESTART_B = """read_restart links.restart
 neighbor 0.2 bin
 fix 1 all nve
-compute p all pair morse/spline
-compute l all links/atom
-compute d all dust links
-variable e equal ke+pe-c_p[3]
-thermo_style custom step ke pe v_e c_p[1] c_p[2] c_p[3] c_d[6]
-thermo_modify norm no format float %.15g
-thermo 100
-run 300
+"""  + OUTPUTS + """run 300
 write_dump all custom links.dump id c_l x y z modify sort id format float %.12g
 """
 
 
 @pytest.mark.parametrize("nprocs", [1, 2])
 def test_restart_keeps_links_and_counts(tmp_path, nprocs):
-    fields = dict(newton="", relink="", shift="", steps=0)
+    fields = dict(newton="", relink="", shift="", steps=0, outputs=OUTPUTS)
     out_a = run_lmp(tmp_path, f"plugin load {PLUGIN}\n" + RESTART_A.format(**fields), nprocs)
     dump_a = np.loadtxt(tmp_path / "links.dump", skiprows=9)
     out_b = run_lmp(tmp_path, f"plugin load {PLUGIN}\n" + RESTART_B, 1, name="in.b")    # written on nprocs, read on 1
@@ -229,7 +223,7 @@ def test_restart_keeps_links_and_counts(tmp_path, nprocs):
 
 
 def test_write_data_keeps_no_links_and_the_next_run_links_by_distance(tmp_path):
-    script = f"plugin load {PLUGIN}\n" + HOT.format(newton="", relink="", shift="", steps=300) + f"""write_data links.data
+    script = f"plugin load {PLUGIN}\n" + HOT.format(newton="", relink="", shift="", steps=300, outputs=OUTPUTS) + f"""write_data links.data
 clear
 plugin load {PLUGIN}
 atom_modify map array
