@@ -127,7 +127,6 @@ template <class Law>
 template <int TAIL, int MODE, int EVFLAG, int EFLAG, int NEWTON_PAIR>
 void PairSpline<Law>::eval(LinkTally &links)
 {
-  constexpr bool KAPPA = mode_kappa(MODE);
   constexpr bool LINKED = mode_link(MODE);
   int *const *const touch = LINKED ? fix_history->firstflag : nullptr;
   const int linking = LINKED ? linking_now() : LINK_KEEP;
@@ -169,16 +168,11 @@ void PairSpline<Law>::eval(LinkTally &links)
       }
       const double rsq_law = MODE == CHAIN ? rsq * scale : rsq;
       double e, fpair;
-      if (LINKED) {
-        const double w = NEWTON_PAIR || j < nlocal ? 1.0 : 0.5;
-        if (rsq <= c.hardsq) singular_error(i, j, rsq);
-        if (!link_eval<TAIL, KAPPA, Law>(c, rsq, touch[i][jj], linking, w, links, e, fpair))
-          continue;
-      } else {
-        if (rsq_law >= c.cutsq) continue;
-        if (rsq_law <= c.hardsq) singular_error(i, j, rsq);
-        e = tail_eval<TAIL, KAPPA, Law>(c, rsq_law, fpair) - c.offset;
-      }
+      const double w = !LINKED || NEWTON_PAIR || j < nlocal ? 1.0 : 0.5;
+      if (!pair_eval<TAIL, MODE>(c, rsq_law, LINKED ? &touch[i][jj] : nullptr, linking, w,
+                                      links, e, fpair))
+        continue;
+      if (rsq_law <= c.hardsq) singular_error(i, j, rsq);
       fpair *= factor_lj * scale;
       fxtmp += delx * fpair;
       fytmp += dely * fpair;

@@ -169,6 +169,22 @@ namespace ClusterDyn {
     enum Mode { PLAIN = 0, KAPPA = 1, CHAIN = 2, LINK = 3, LINK_KAPPA = 4 };
     static constexpr bool mode_kappa(int mode) { return mode != PLAIN && mode != LINK; }
     static constexpr bool mode_link(int mode) { return mode == LINK || mode == LINK_KAPPA; }
+
+    // energy (shifted) and fpair of a pair at rsq_law, the law's argument squared (with link:
+    // updating the pair's flag linked, weight w in the tallies); false: no interaction.
+    // The serial and /omp kernels share it.
+    template <int TAIL, int MODE>
+    static bool pair_eval(const SplineCoeff &c, double rsq_law, int *linked, int linking, double w,
+                          LinkTally &t, double &e, double &fpair)
+    {
+      if constexpr (mode_link(MODE)) {
+        return link_eval<TAIL, mode_kappa(MODE), Law>(c, rsq_law, *linked, linking, w, t, e, fpair);
+      } else {
+        if (rsq_law >= c.cutsq) return false;
+        e = tail_eval<TAIL, mode_kappa(MODE), Law>(c, rsq_law, fpair) - c.offset;
+        return true;
+      }
+    }
     // calls run(tail, mode, evflag, eflag, newton_pair) with compile-time constants
     template <class Run> void dispatch(int eflag, Run &&run) const;
 

@@ -78,7 +78,6 @@ template <class Law>
 template <int TAIL, int MODE, int EVFLAG, int EFLAG, int NEWTON_PAIR>
 void PairSplineOMP<Law>::eval(int iifrom, int iito, ThrData *const thr, LinkTally &links)
 {
-  constexpr bool KAPPA = PairSpline<Law>::mode_kappa(MODE);
   constexpr bool CHAIN = MODE == PairSpline<Law>::CHAIN;
   constexpr bool LINKED = PairSpline<Law>::mode_link(MODE);
   int *const *const touch = LINKED ? this->fix_history->firstflag : nullptr;
@@ -120,16 +119,11 @@ void PairSplineOMP<Law>::eval(int iifrom, int iito, ThrData *const thr, LinkTall
       }
       const double rsq_law = CHAIN ? rsq * scale : rsq;
       double e, fpair;
-      if (LINKED) {
-        const double w = NEWTON_PAIR || j < nlocal ? 1.0 : 0.5;
-        if (rsq <= c.hardsq) this->singular_error(i, j, rsq);
-        if (!link_eval<TAIL, KAPPA, Law>(c, rsq, touch[i][jj], linking, w, links, e, fpair))
-          continue;
-      } else {
-        if (rsq_law >= c.cutsq) continue;
-        if (rsq_law <= c.hardsq) this->singular_error(i, j, rsq);
-        e = tail_eval<TAIL, KAPPA, Law>(c, rsq_law, fpair) - c.offset;
-      }
+      const double w = !LINKED || NEWTON_PAIR || j < nlocal ? 1.0 : 0.5;
+      if (!PairSpline<Law>::template pair_eval<TAIL, MODE>(c, rsq_law, LINKED ? &touch[i][jj] : nullptr, linking, w,
+                                      links, e, fpair))
+        continue;
+      if (rsq_law <= c.hardsq) this->singular_error(i, j, rsq);
       fpair *= factor_lj * scale;
       fxtmp += delx * fpair;
       fytmp += dely * fpair;
