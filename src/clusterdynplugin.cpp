@@ -12,6 +12,7 @@
 #include "compute_dust.h"
 #include "compute_links_atom.h"
 #include "compute_pair_params.h"
+#include "fix_descent_normalized.h"
 #include "fix_viscous_relative.h"
 #include "pair_spline.h"
 #include "register_pair.h"
@@ -68,6 +69,11 @@ Fix *create_fix_viscous_relative(LAMMPS *lmp, int narg, char **arg)
   return new FixViscousRelative(lmp, narg, arg);
 }
 
+Fix *create_fix_descent_normalized(LAMMPS *lmp, int narg, char **arg)
+{
+  return new FixDescentNormalized(lmp, narg, arg);
+}
+
 Compute *create_compute_dust(LAMMPS *lmp, int narg, char **arg)
 {
   return new ComputeDust(lmp, narg, arg);
@@ -101,6 +107,11 @@ extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
   plugin.author = "cluster-dynamics plugin developers";
   plugin.creator.v2 = (lammpsplugin_factory2 *) &create_fix_viscous_relative;
   plugin.handle = handle;
+  (*register_plugin)(&plugin, lmp);
+
+  plugin.name = "descent/normalized";
+  plugin.info = "Chernyshev's quasi-static iteration: normalized steps along the force";
+  plugin.creator.v2 = (lammpsplugin_factory2 *) &create_fix_descent_normalized;
   (*register_plugin)(&plugin, lmp);
 
   plugin.style = "compute";

@@ -17,7 +17,7 @@ PLUGIN = os.environ["CLUSTERDYN_PLUGIN"]
 LMP = os.environ["CLUSTERDYN_LMP"]
 PAIR_STYLES = [s + v for s in ("morse/spline", "lj/spline", "mie/spline", "harmonic/spline")
                for v in ("", "/omp")]
-FIX_STYLES = ["viscous/relative"]
+FIX_STYLES = ["viscous/relative", "descent/normalized"]
 COMPUTE_STYLES = ["dust", "links/atom", "pair/params"]
 
 

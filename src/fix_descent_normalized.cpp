@@ -1,0 +1,291 @@
+/* ----------------------------------------------------------------------
+   Cluster-dynamics plugin for LAMMPS: fix descent/normalized.
+
+   Chernyshev's quasi-static particle method (doc/fix_descent_normalized.rst):
+   each timestep is one iteration that moves every atom of the group by a
+   step of length h along its force,
+     x_i <- x_i + h F_i / |F_i|          (atoms with F_i = 0 stay)
+   and then h <- max(F h, Hmin).  The forces are those of the previous
+   step after every fix has acted (fix setforce, walls), as a time
+   integrator sees them.  With inertia M K, K times the mean of the atom's
+   last M displacements is added to its step; the displacements are kept
+   per atom (they migrate with the atom and are written to restart files).
+   Velocities are zero, or with inertia the mean displacement / dt.
+------------------------------------------------------------------------- */
+
+#include "fix_descent_normalized.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "memory.h"
+#include "modify.h"
+#include "update.h"
+
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+using namespace ClusterDyn;
+
+FixDescentNormalized::FixDescentNormalized(LAMMPS *lmp, int narg, char **arg) :
+    Fix(lmp, narg, arg), decay(1.0), hmin(0.0), nmemory(0), kinertia(0.0), nfilled(0),
+    history(nullptr), dmax_local(0.0), stats_step(-1), stats{0.0, 0.0, 0.0}
+{
+  if (narg < 5 || strcmp(arg[3], "h") != 0)
+    error->all(FLERR, "Fix descent/normalized: expected fix ID group descent/normalized h H "
+               "[decay F] [min Hmin] [inertia M K]");
+  step = utils::numeric(FLERR, arg[4], false, lmp);
+  if (!(step > 0.0))
+    error->all(FLERR, "Fix descent/normalized: h must be > 0 (got {})", arg[4]);
+
+  int iarg = 5;
+  while (iarg < narg) {
+    const std::string key = arg[iarg];
+    const int nvalues = key == "inertia" ? 2 : 1;
+    if (iarg + nvalues >= narg)
+      error->all(FLERR, "Fix descent/normalized: keyword {} needs {} value{}", key, nvalues,
+                 nvalues > 1 ? "s" : "");
+    if (key == "decay") {
+      decay = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (!(decay > 0.0 && decay <= 1.0))
+        error->all(FLERR, "Fix descent/normalized: decay F must be in (0,1] (got {})",
+                   arg[iarg + 1]);
+    } else if (key == "min") {
+      hmin = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (!(hmin >= 0.0 && hmin <= step))
+        error->all(FLERR, "Fix descent/normalized: min Hmin must be in [0,h] (got {})",
+                   arg[iarg + 1]);
+    } else if (key == "inertia") {
+      nmemory = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
+      if (nmemory < 1)
+        error->all(FLERR, "Fix descent/normalized: inertia M must be >= 1 (got {})",
+                   arg[iarg + 1]);
+      kinertia = utils::numeric(FLERR, arg[iarg + 2], false, lmp);
+      if (!(kinertia >= 0.0 && kinertia < 1.0))
+        error->all(FLERR, "Fix descent/normalized: inertia K must be in [0,1) (got {})",
+                   arg[iarg + 2]);
+    } else {
+      error->all(FLERR, "Fix descent/normalized: unknown keyword '{}' (expected decay, min or "
+                 "inertia)", key);
+    }
+    iarg += nvalues + 1;
+  }
+
+  time_integrate = 1;
+  scalar_flag = 1;
+  extscalar = 0;
+  vector_flag = 1;
+  size_vector = 3;
+  extvector = 0;
+  global_freq = 1;
+  restart_global = 1;
+
+  if (nmemory) {
+    restart_peratom = 1;
+    maxexchange = 3 * nmemory;
+    grow_arrays(atom->nmax);
+    atom->add_callback(Atom::GROW);
+    atom->add_callback(Atom::RESTART);
+    for (int i = 0; i < atom->nlocal; i++)
+      for (int k = 0; k < 3 * nmemory; k++) history[i][k] = 0.0;
+  }
+}
+
+FixDescentNormalized::~FixDescentNormalized()
+{
+  if (nmemory) {
+    atom->delete_callback(id, Atom::GROW);
+    atom->delete_callback(id, Atom::RESTART);
+  }
+  memory->destroy(history);
+}
+
+int FixDescentNormalized::setmask()
+{
+  return INITIAL_INTEGRATE;
+}
+
+void FixDescentNormalized::init()
+{
+  if (!utils::strmatch(update->integrate_style, "^verlet"))
+    error->all(FLERR, "Fix descent/normalized needs run_style verlet (got {})",
+               update->integrate_style);
+  check_integrators();
+}
+
+// no other time integrator may move the atoms this fix moves
+void FixDescentNormalized::check_integrators()
+{
+  const int *mask = atom->mask;
+  for (const auto &fix : modify->get_fix_list()) {
+    if (fix == this || !fix->time_integrate) continue;
+    bigint mine = 0, all = 0;
+    for (int i = 0; i < atom->nlocal; i++)
+      if ((mask[i] & groupbit) && (mask[i] & fix->groupbit)) mine++;
+    MPI_Allreduce(&mine, &all, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+    if (all)
+      error->all(FLERR, "Fix descent/normalized {} and time integrator fix {} ({}) move the same "
+                 "{} atoms: each atom needs exactly one", id, fix->id, fix->style, all);
+  }
+}
+
+void FixDescentNormalized::setup(int /*vflag*/)
+{
+  stats_step = -1;
+  double **v = atom->v;
+  const int *mask = atom->mask;
+  for (int i = 0; i < atom->nlocal; i++)
+    if ((mask[i] & groupbit) && !nmemory) v[i][0] = v[i][1] = v[i][2] = 0.0;
+}
+
+void FixDescentNormalized::initial_integrate(int /*vflag*/)
+{
+  double **x = atom->x;
+  double **v = atom->v;
+  double **f = atom->f;
+  const int *mask = atom->mask;
+  const int nlocal = atom->nlocal;
+  const int dim = domain->dimension;
+  const int nfilled_next = nfilled < nmemory ? nfilled + 1 : nmemory;
+  const double inv_dt = 1.0 / update->dt;
+
+  dmax_local = 0.0;
+  for (int i = 0; i < nlocal; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    double d[3] = {0.0, 0.0, 0.0};
+    double fsq = 0.0;
+    for (int k = 0; k < dim; k++) fsq += f[i][k] * f[i][k];
+    if (fsq > 0.0) {
+      const double scale = step / sqrt(fsq);
+      for (int k = 0; k < dim; k++) d[k] = scale * f[i][k];
+    }
+    if (nmemory) {
+      double *hist = history[i];
+      double mean[3] = {0.0, 0.0, 0.0};
+      for (int m = 0; m < nfilled; m++)
+        for (int k = 0; k < 3; k++) mean[k] += hist[3 * m + k];
+      for (int k = 0; k < 3; k++) d[k] += nfilled ? kinertia * mean[k] / nfilled : 0.0;
+      memmove(hist + 3, hist, sizeof(double) * 3 * (nmemory - 1));
+      for (int k = 0; k < 3; k++) hist[k] = d[k];
+      double vnew[3] = {0.0, 0.0, 0.0};
+      for (int m = 0; m < nfilled_next; m++)
+        for (int k = 0; k < 3; k++) vnew[k] += hist[3 * m + k];
+      for (int k = 0; k < 3; k++) v[i][k] = vnew[k] / nfilled_next * inv_dt;
+    } else {
+      v[i][0] = v[i][1] = v[i][2] = 0.0;
+    }
+    for (int k = 0; k < 3; k++) x[i][k] += d[k];
+    dmax_local = fmax(dmax_local, sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]));
+  }
+  nfilled = nfilled_next;
+  step = fmax(step * decay, hmin);
+  stats_step = -1;
+}
+
+// max and mean |F_i| over the group at the current forces, largest last displacement
+void FixDescentNormalized::compute_stats()
+{
+  if (stats_step == update->ntimestep) return;
+  double **f = atom->f;
+  const int *mask = atom->mask;
+  double mine[2] = {0.0, dmax_local}, sum[2] = {0.0, 0.0}, all[2];
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    const double fmag = sqrt(f[i][0] * f[i][0] + f[i][1] * f[i][1] + f[i][2] * f[i][2]);
+    mine[0] = fmax(mine[0], fmag);
+    sum[0] += fmag;
+    sum[1] += 1.0;
+  }
+  MPI_Allreduce(mine, all, 2, MPI_DOUBLE, MPI_MAX, world);
+  double total[2];
+  MPI_Allreduce(sum, total, 2, MPI_DOUBLE, MPI_SUM, world);
+  stats[0] = all[0];
+  stats[1] = total[1] > 0.0 ? total[0] / total[1] : 0.0;
+  stats[2] = all[1];
+  stats_step = update->ntimestep;
+}
+
+double FixDescentNormalized::compute_scalar()
+{
+  return step;
+}
+
+double FixDescentNormalized::compute_vector(int n)
+{
+  compute_stats();
+  return stats[n];
+}
+
+void FixDescentNormalized::write_restart(FILE *fp)
+{
+  if (comm->me == 0) {
+    const double list[2] = {step, (double) nfilled};
+    const int size = sizeof(list);
+    fwrite(&size, sizeof(int), 1, fp);
+    fwrite(list, sizeof(double), 2, fp);
+  }
+}
+
+void FixDescentNormalized::restart(char *buf)
+{
+  double list[2];
+  memcpy(list, buf, sizeof(list));
+  step = list[0];
+  nfilled = MIN((int) list[1], nmemory);
+}
+
+void FixDescentNormalized::grow_arrays(int nmax)
+{
+  memory->grow(history, nmax, 3 * nmemory, "descent/normalized:history");
+}
+
+void FixDescentNormalized::copy_arrays(int i, int j, int /*delflag*/)
+{
+  memcpy(history[j], history[i], sizeof(double) * 3 * nmemory);
+}
+
+int FixDescentNormalized::pack_exchange(int i, double *buf)
+{
+  memcpy(buf, history[i], sizeof(double) * 3 * nmemory);
+  return 3 * nmemory;
+}
+
+int FixDescentNormalized::unpack_exchange(int nlocal, double *buf)
+{
+  memcpy(history[nlocal], buf, sizeof(double) * 3 * nmemory);
+  return 3 * nmemory;
+}
+
+int FixDescentNormalized::pack_restart(int i, double *buf)
+{
+  buf[0] = 3 * nmemory + 1;    // the size first, as every fix's restart data
+  memcpy(buf + 1, history[i], sizeof(double) * 3 * nmemory);
+  return 3 * nmemory + 1;
+}
+
+void FixDescentNormalized::unpack_restart(int nlocal, int nth)
+{
+  double **extra = atom->extra;
+  int m = 0;
+  for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
+  const int stored = static_cast<int>(extra[nlocal][m]) - 1;
+  for (int k = 0; k < 3 * nmemory; k++) history[nlocal][k] = k < stored ? extra[nlocal][m + 1 + k] : 0.0;
+}
+
+int FixDescentNormalized::size_restart(int /*nlocal*/)
+{
+  return 3 * nmemory + 1;
+}
+
+int FixDescentNormalized::maxsize_restart()
+{
+  return 3 * nmemory + 1;
+}
+
+double FixDescentNormalized::memory_usage()
+{
+  return (double) atom->nmax * 3 * nmemory * sizeof(double);
+}
