@@ -38,19 +38,25 @@ def strip_plot():
     ax1.plot(100 * unload[:, 0], unload[:, 1], "s", mfc="none", label="no imperfection")
     eps = np.linspace(0, load[:, 0].max(), 2)
     ax1.plot(100 * eps, E2D * eps, "k--", label=f"Hooke, E = 2C/sqrt(3) = {E2D:.4f} D/a$^2$")
-    for e, name in ((euler, "Euler"), (timo, "Timoshenko")):
+    top = load[:, 1].max()
+    for e, name, y in ((euler, "Euler", 0.05), (timo, "Timoshenko", 0.2)):
         ax1.axvline(100 * e, color="gray", ls=":")
-        ax1.text(100 * e, 0.0, f" {name}\n {100 * e:.2f}%", fontsize=8, va="bottom")
+        ax1.text(100 * e, y * top, f" {name} {100 * e:.2f}%", fontsize=8, va="bottom")
     ax1.set_xlabel("strain (%)")
     ax1.set_ylabel("stress (D/a$^2$, force per length)")
     ax1.legend(fontsize=8)
-    ax2.plot(100 * load[:, 0], load[:, 2], "o-")
+    turn = int(np.argmax(load[:, 0])) + 1
+    ax2.plot(100 * load[:turn, 0], load[:turn, 2], "o-", label="loading")
+    ax2.plot(100 * load[turn - 1:, 0], load[turn - 1:, 2], "s--", mfc="none", label="unloading")
+    ax2.plot(100 * unload[:, 0], unload[:, 2], "^:", label="no imperfection")
+    ax2.legend(fontsize=8)
     ax2.set_xlabel("strain (%)")
-    ax2.set_ylabel("mid-height deflection change (a)")
+    ax2.set_ylabel("mid-height lateral displacement (a)")
     fig.suptitle(f"clamped strip {NX} x {NY} particles, Mie k = 0.25, link 1.05")
     fig.tight_layout()
     fig.savefig(os.path.join(HERE, "strip.png"), dpi=110)
-    slope = np.polyfit(load[:4, 0], load[:4, 1], 1)[0]
+    eps, sig = load[:4, 0], load[:4, 1]
+    slope = (eps @ sig) / (eps @ eps)                  # through the origin
     print(f"strip: Hooke slope {slope:.5f} D/a^2 against 2C/sqrt(3) = {E2D:.5f} "
           f"({slope / E2D - 1:+.2%}); Euler {100 * euler:.2f} %, Timoshenko {100 * timo:.2f} %; "
           f"residual after unloading {unload[-1, 6]:.3g} a")
@@ -68,7 +74,7 @@ def plate_plot():
         for ax, face in zip(axes, (d[:, 2] < ymid, d[:, 2] > ymid)):
             x, fy = d[face, 1], d[face, 4]
             o = np.argsort(x)
-            sign = 1 if ax is axes[0] else -1         # compression positive on both faces
+            sign = -1 if ax is axes[0] else 1        # compression positive on both faces
             ax.plot(1e3 * (x[o] - x.min()), sign * fy[o] / a / 1e6, ".-", lw=0.8,
                     label=f"particles, {nx} across")
     for nu, style in ((0.3, "k-"), (1 / 3, "k--")):
