@@ -272,7 +272,8 @@ void FixDescentNormalized::unpack_restart(int nlocal, int nth)
   int m = 0;
   for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
   const int stored = static_cast<int>(extra[nlocal][m]) - 1;
-  for (int k = 0; k < 3 * nmemory; k++) history[nlocal][k] = k < stored ? extra[nlocal][m + 1 + k] : 0.0;
+  for (int k = 0; k < 3 * nmemory; k++)
+    history[nlocal][k] = k < stored ? extra[nlocal][m + 1 + k] : 0.0;
 }
 
 int FixDescentNormalized::size_restart(int /*nlocal*/)

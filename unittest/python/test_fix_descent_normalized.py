@@ -150,9 +150,7 @@ minimize 0 {1e-13 * d / a} 100000 1000000
 {dump_sorted('minimize.txt')}"""
     run_lmp(tmp_path, script)
     x_descent, x_min = read_dump(tmp_path / "descent.txt"), read_dump(tmp_path / "minimize.txt")
-    moved = np.abs(x_min - read_dump(tmp_path / "descent.txt")).max()
     assert np.abs(x_descent - x_min).max() < 3 * hmin
-    assert moved < 3 * hmin
 
 
 def test_two_ranks_give_the_one_rank_iterations_and_equilibrium(tmp_path):
