@@ -31,8 +31,8 @@ using namespace FixConst;
 using namespace ClusterDyn;
 
 FixDescentNormalized::FixDescentNormalized(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), decay(1.0), hmin(0.0), nmemory(0), kinertia(0.0), nfilled(0),
-    history(nullptr), dmax_local(0.0), stats_step(-1), stats{0.0, 0.0, 0.0}
+    Fix(lmp, narg, arg), decay(1.0), hmin(0.0), nmemory(0), kinertia(0.0), nfilled(0), slot(0),
+    nper(0), sum(nullptr), dmax_local(0.0), stats_step(-1), stats{0.0, 0.0, 0.0}
 {
   if (narg < 5 || strcmp(arg[3], "h") != 0)
     error->all(FLERR, "Fix descent/normalized: expected fix ID group descent/normalized h H "
@@ -85,12 +85,13 @@ FixDescentNormalized::FixDescentNormalized(LAMMPS *lmp, int narg, char **arg) :
 
   if (nmemory) {
     restart_peratom = 1;
-    maxexchange = 3 * nmemory;
+    nper = 3 * nmemory + 3;
+    maxexchange = nper;
+    rings.assign(nmemory, nullptr);
     grow_arrays(atom->nmax);
     atom->add_callback(Atom::GROW);
     atom->add_callback(Atom::RESTART);
-    for (int i = 0; i < atom->nlocal; i++)
-      for (int k = 0; k < 3 * nmemory; k++) history[i][k] = 0.0;
+    for (int i = 0; i < atom->nlocal; i++) clear_history(i);
   }
 }
 
@@ -100,7 +101,8 @@ FixDescentNormalized::~FixDescentNormalized()
     atom->delete_callback(id, Atom::GROW);
     atom->delete_callback(id, Atom::RESTART);
   }
-  memory->destroy(history);
+  for (auto &ring : rings) memory->destroy(ring);
+  memory->destroy(sum);
 }
 
 int FixDescentNormalized::setmask()
@@ -163,17 +165,16 @@ void FixDescentNormalized::initial_integrate(int /*vflag*/)
       for (int k = 0; k < dim; k++) d[k] = scale * f[i][k];
     }
     if (nmemory) {
-      double *hist = history[i];
-      double mean[3] = {0.0, 0.0, 0.0};
-      for (int m = 0; m < nfilled; m++)
-        for (int k = 0; k < 3; k++) mean[k] += hist[3 * m + k];
-      for (int k = 0; k < 3; k++) d[k] += nfilled ? kinertia * mean[k] / nfilled : 0.0;
-      memmove(hist + 3, hist, sizeof(double) * 3 * (nmemory - 1));
-      for (int k = 0; k < 3; k++) hist[k] = d[k];
-      double vnew[3] = {0.0, 0.0, 0.0};
-      for (int m = 0; m < nfilled_next; m++)
-        for (int k = 0; k < 3; k++) vnew[k] += hist[3 * m + k];
-      for (int k = 0; k < 3; k++) v[i][k] = vnew[k] / nfilled_next * inv_dt;
+      // ring of the last M displacements (slot: the oldest, overwritten now) and their sum
+      double *ring = rings[slot][i];
+      double *total = sum[i];
+      for (int k = 0; k < 3; k++) {
+        if (nfilled) d[k] += kinertia * total[k] / nfilled;
+        if (nfilled == nmemory) total[k] -= ring[k];
+        ring[k] = d[k];
+        total[k] += d[k];
+        v[i][k] = total[k] / nfilled_next * inv_dt;
+      }
     } else {
       v[i][0] = v[i][1] = v[i][2] = 0.0;
     }
@@ -181,6 +182,7 @@ void FixDescentNormalized::initial_integrate(int /*vflag*/)
     dmax_local = fmax(dmax_local, sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]));
   }
   nfilled = nfilled_next;
+  if (nmemory) slot = (slot + 1) % nmemory;
   step = fmax(step * decay, hmin);
   stats_step = -1;
 }
@@ -222,48 +224,49 @@ double FixDescentNormalized::compute_vector(int n)
 void FixDescentNormalized::write_restart(FILE *fp)
 {
   if (comm->me == 0) {
-    const double list[2] = {step, (double) nfilled};
+    const double list[3] = {step, (double) nfilled, (double) slot};
     const int size = sizeof(list);
     fwrite(&size, sizeof(int), 1, fp);
-    fwrite(list, sizeof(double), 2, fp);
+    fwrite(list, sizeof(double), 3, fp);
   }
 }
 
 void FixDescentNormalized::restart(char *buf)
 {
-  double list[2];
+  double list[3];
   memcpy(list, buf, sizeof(list));
   step = list[0];
   nfilled = MIN((int) list[1], nmemory);
+  slot = nmemory ? static_cast<int>(list[2]) % nmemory : 0;
 }
 
 void FixDescentNormalized::grow_arrays(int nmax)
 {
-  memory->grow(history, nmax, 3 * nmemory, "descent/normalized:history");
+  memory->grow(sum, nmax, 3, "descent/normalized:sum");
+  for (auto &ring : rings) memory->grow(ring, nmax, 3, "descent/normalized:ring");
 }
 
 void FixDescentNormalized::copy_arrays(int i, int j, int /*delflag*/)
 {
-  memcpy(history[j], history[i], sizeof(double) * 3 * nmemory);
+  for (int k = 0; k < 3; k++) sum[j][k] = sum[i][k];
+  for (auto &ring : rings)
+    for (int k = 0; k < 3; k++) ring[j][k] = ring[i][k];
 }
 
 int FixDescentNormalized::pack_exchange(int i, double *buf)
 {
-  memcpy(buf, history[i], sizeof(double) * 3 * nmemory);
-  return 3 * nmemory;
+  return pack_history(i, buf);
 }
 
 int FixDescentNormalized::unpack_exchange(int nlocal, double *buf)
 {
-  memcpy(history[nlocal], buf, sizeof(double) * 3 * nmemory);
-  return 3 * nmemory;
+  return unpack_history(nlocal, buf, nper);
 }
 
 int FixDescentNormalized::pack_restart(int i, double *buf)
 {
-  buf[0] = 3 * nmemory + 1;    // the size first, as every fix's restart data
-  memcpy(buf + 1, history[i], sizeof(double) * 3 * nmemory);
-  return 3 * nmemory + 1;
+  buf[0] = nper + 1;    // the size first, as every fix's restart data
+  return pack_history(i, buf + 1) + 1;
 }
 
 void FixDescentNormalized::unpack_restart(int nlocal, int nth)
@@ -272,21 +275,47 @@ void FixDescentNormalized::unpack_restart(int nlocal, int nth)
   int m = 0;
   for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
   const int stored = static_cast<int>(extra[nlocal][m]) - 1;
-  for (int k = 0; k < 3 * nmemory; k++)
-    history[nlocal][k] = k < stored ? extra[nlocal][m + 1 + k] : 0.0;
+  if (stored == nper) unpack_history(nlocal, &extra[nlocal][m + 1], nper);
+  else clear_history(nlocal);    // written with another M: start the memory afresh
 }
 
 int FixDescentNormalized::size_restart(int /*nlocal*/)
 {
-  return 3 * nmemory + 1;
+  return nper + 1;
 }
 
 int FixDescentNormalized::maxsize_restart()
 {
-  return 3 * nmemory + 1;
+  return nper + 1;
+}
+
+// atom i's running sum, then its ring slots in order: nper values
+int FixDescentNormalized::pack_history(int i, double *buf)
+{
+  int n = 0;
+  for (int k = 0; k < 3; k++) buf[n++] = sum[i][k];
+  for (auto &ring : rings)
+    for (int k = 0; k < 3; k++) buf[n++] = ring[i][k];
+  return n;
+}
+
+int FixDescentNormalized::unpack_history(int i, const double *buf, int n)
+{
+  int m = 0;
+  for (int k = 0; k < 3; k++) sum[i][k] = buf[m++];
+  for (auto &ring : rings)
+    for (int k = 0; k < 3; k++) ring[i][k] = buf[m++];
+  return n;
+}
+
+void FixDescentNormalized::clear_history(int i)
+{
+  for (int k = 0; k < 3; k++) sum[i][k] = 0.0;
+  for (auto &ring : rings)
+    for (int k = 0; k < 3; k++) ring[i][k] = 0.0;
 }
 
 double FixDescentNormalized::memory_usage()
 {
-  return (double) atom->nmax * 3 * nmemory * sizeof(double);
+  return (double) atom->nmax * nper * sizeof(double);
 }

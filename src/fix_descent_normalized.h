@@ -8,6 +8,8 @@
 
 #include "fix.h"
 
+#include <vector>
+
 namespace LAMMPS_NS {
 namespace ClusterDyn {
 
@@ -36,13 +38,20 @@ namespace ClusterDyn {
     double memory_usage() override;
 
    private:
+    int pack_history(int, double *);
+    int unpack_history(int, const double *, int);
+    void clear_history(int);
+
     double step;          // h of the next iteration (distance units)
     double decay;         // F: h <- max(F h, hmin) after each iteration
     double hmin;          // Hmin
     int nmemory;          // M (0: no inertia)
     double kinertia;      // K
     int nfilled;          // displacements held per atom so far (<= M)
-    double **history;     // per atom: the last M displacements, newest first (3 M values)
+    int slot;             // ring position of the oldest displacement (the next overwritten)
+    int nper;             // values per atom: 3 M ring + 3 running sum
+    std::vector<double **> rings;   // rings[m][i]: atom i's displacement in ring slot m
+    double **sum;         // per atom: the sum of its ring (each array contiguous over atoms)
     double dmax_local;    // largest displacement of my atoms in the last iteration
     bigint stats_step;    // timestep of the cached force statistics (-1: stale)
     double stats[3];      // max |F_i|, mean |F_i|, largest displacement

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# Cost of one fix descent/normalized iteration against one velocity-Verlet step (fix nve) on
-# the same 2D lattice (in.bench_descent, 40,000 particles): LAMMPS's Pair, Modify and loop
-# times, best of $reps runs each, alternating the two; markdown table.
+# Cost of one fix descent/normalized iteration (plain, and with inertia 20 0.99) against one
+# velocity-Verlet step (fix nve) on the same 2D lattice (in.bench_descent, 40,000 particles):
+# LAMMPS's Pair, Modify and loop times, best of $reps runs each; markdown table.
 #   source build/env.sh; bash doc/benchmarks/bench_fix_descent_normalized.sh [steps] [reps]
 set -euo pipefail
 cd "$(dirname "$0")"
@@ -16,7 +16,7 @@ times() {  # integrator: prints "pair modify loop" of the run with the smallest 
 }
 echo "| run ($steps steps, 40,000 particles, mie/spline cut 1.1 link 1.05) | Pair (s) | Modify (s) | Loop (s) |"
 echo "|---|---|---|---|"
-for integrator in nve descent; do
+for integrator in nve descent inertia; do
   read -r pair modify loop <<<"$(times "$integrator")"
-  echo "| fix $integrator | $pair | $modify | $loop |"
+  echo "| $integrator | $pair | $modify | $loop |"
 done
