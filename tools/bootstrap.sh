@@ -38,7 +38,7 @@ as_root() { if [ "$(id -u)" = 0 ]; then "$@"; else sudo "$@"; fi; }
 install_packages() {
   local missing=()
   for p in "${apt_packages[@]}"; do
-    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
+    [[ $(dpkg-query -W -f='${Status}' "$p" 2>/dev/null) == 'install ok installed' ]] || missing+=("$p")
   done
   [ ${#missing[@]} -eq 0 ] && return
   say "installing Debian packages: ${missing[*]}"
@@ -94,8 +94,10 @@ fi
 [ -x "$lmp_bld/lmp" ] && [ -e "$lmp_bld/liblammps.so" ] \
   || { say "no lmp / liblammps.so in $lmp_bld"; exit 1; }
 # lmp must run the liblammps it was built with (Debian's liblammps.so.0 has the same soname)
-ldd "$lmp_bld/lmp" | grep -q "liblammps.so.0 => $lmp_bld/" \
-  || { say "$lmp_bld/lmp does not load its own liblammps.so.0:"; ldd "$lmp_bld/lmp" | grep lammps; exit 1; }
+# (ldd's output is read whole: `ldd | grep -q` under pipefail fails when grep exits first)
+lmp_libs=$(ldd "$lmp_bld/lmp")
+[[ $lmp_libs == *"liblammps.so.0 => $lmp_bld/"* ]] \
+  || { say "$lmp_bld/lmp does not load its own liblammps.so.0:"; grep lammps <<<"$lmp_libs"; exit 1; }
 
 # the plugin: reconfigure only when the LAMMPS build changed
 mkdir -p "$top/build"
