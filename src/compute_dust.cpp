@@ -12,9 +12,14 @@
      2. one forward communication of the labels of my atoms to their ghosts
      3. one MPI_Allgatherv of the label pairs (mine, owner's) that ghosts
         owned by other processors create; a global union-find over them
-     4. one MPI_Allgatherv of the (label, size, mass) of my fragments
+     4. one MPI_Alltoallv of my fragments' sums (size, mass, mass-weighted
+        unwrapped position and velocity) to their owners (ID modulo the
+        number of processors), the body from two MPI_Allreduce, one
+        MPI_Alltoallv of each fragment's size and dust flag back
    The fragment ID is the smallest atom ID in the fragment, as compute
-   cluster/atom gives it.  Cost: O(N) per processor plus the boundary.
+   cluster/atom gives it.  Each fragment's local row (ID, size, mass, centre
+   of mass, its velocity, dust flag) is on its owner.  Cost: O(N) per
+   processor plus the boundary.
 ------------------------------------------------------------------------- */
 
 #include "compute_dust.h"
@@ -23,6 +28,7 @@
 
 #include "atom.h"
 #include "comm.h"
+#include "domain.h"
 #include "error.h"
 #include "fix_neigh_history.h"
 #include "force.h"
@@ -42,7 +48,10 @@
 using namespace LAMMPS_NS;
 using namespace ClusterDyn;
 
-enum { FRAGMENT_ID = 0, FRAGMENT_SIZE = 1, DUST_FLAG = 2 };
+enum { FRAGMENT_ID = 0, FRAGMENT_SIZE = 1, DUST_FLAG = 2 };         // per-atom columns
+enum { SIZE = 0, MASS = 1, MX = 2, MV = 5 };                         // ComputeDust::Sums
+static constexpr int RECORD = 1 + ComputeDust::NSUMS;                // fragment ID, sums
+static constexpr int NCOLS = 10;                                     // local columns
 
 // every processor's entries, concatenated in rank order, on every processor
 template <class T>
@@ -62,9 +71,36 @@ static std::vector<T> allgatherv(const std::vector<T> &mine, MPI_Datatype type, 
   return all;
 }
 
+// each processor's boxes[p] delivered to processor p; returns what I received, concatenated in
+// rank order, and sets recvcounts (how much came from each processor)
+static std::vector<double> alltoallv(const std::vector<std::vector<double>> &boxes,
+                                     std::vector<int> &recvcounts, MPI_Comm world)
+{
+  const int nprocs = boxes.size();
+  recvcounts.assign(nprocs, 0);
+  std::vector<int> sendcounts(nprocs), sdispls(nprocs), rdispls(nprocs);
+  std::vector<double> sendbuf;
+  for (int p = 0; p < nprocs; p++) {
+    sdispls[p] = sendbuf.size();
+    sendcounts[p] = boxes[p].size();
+    sendbuf.insert(sendbuf.end(), boxes[p].begin(), boxes[p].end());
+  }
+  MPI_Alltoall(sendcounts.data(), 1, MPI_INT, recvcounts.data(), 1, MPI_INT, world);
+  int total = 0;
+  for (int p = 0; p < nprocs; p++) {
+    rdispls[p] = total;
+    total += recvcounts[p];
+  }
+  std::vector<double> recvbuf(total);
+  MPI_Alltoallv(sendbuf.data(), sendcounts.data(), sdispls.data(), MPI_DOUBLE, recvbuf.data(),
+                recvcounts.data(), rdispls.data(), MPI_DOUBLE, world);
+  return recvbuf;
+}
+
 ComputeDust::ComputeDust(LAMMPS *lmp, int narg, char **arg) :
-    Compute(lmp, narg, arg), cutoff_user(0.0), maxsize(0), links(0), link_history(nullptr),
-    list(nullptr), nmax(0), fragments(nullptr), evaluated(-1)
+    Compute(lmp, narg, arg), cutoff_user(0.0), maxsize(0), links(0), dust_rows(0),
+    link_history(nullptr), list(nullptr), nmax(0), fragments(nullptr), nrows(0), maxrows(0),
+    rows(nullptr), evaluated(-1)
 {
   for (int iarg = 3; iarg < narg; iarg += 2) {
     const std::string key = arg[iarg];
@@ -81,9 +117,14 @@ ComputeDust::ComputeDust(LAMMPS *lmp, int narg, char **arg) :
     } else if (key == "maxsize") {
       maxsize = utils::bnumeric(FLERR, arg[iarg + 1], false, lmp);
       if (maxsize < 1) error->all(FLERR, "Compute dust: maxsize must be >= 1 (got {})", arg[iarg + 1]);
+    } else if (key == "rows") {
+      const std::string which = arg[iarg + 1];
+      if (which != "all" && which != "dust")
+        error->all(FLERR, "Compute dust: rows must be all or dust (got {})", which);
+      dust_rows = which == "dust";
     } else
-      error->all(FLERR, "Compute dust: unknown keyword '{}' (expected cutoff, maxsize or links)",
-                 key);
+      error->all(FLERR, "Compute dust: unknown keyword '{}' (expected cutoff, maxsize, links "
+                 "or rows)", key);
   }
   if (links && cutoff_user > 0.0)
     error->all(FLERR, "Compute dust: keywords links and cutoff exclude each other (the links are "
@@ -95,6 +136,8 @@ ComputeDust::ComputeDust(LAMMPS *lmp, int narg, char **arg) :
   vector = new double[size_vector];
   peratom_flag = 1;
   size_peratom_cols = 3;
+  local_flag = 1;
+  size_local_cols = NCOLS;
   comm_forward = 1;
 }
 
@@ -102,6 +145,7 @@ ComputeDust::~ComputeDust()
 {
   delete[] vector;
   memory->destroy(fragments);
+  memory->destroy(rows);
 }
 
 void ComputeDust::init()
@@ -154,6 +198,12 @@ void ComputeDust::compute_vector()
 void ComputeDust::compute_peratom()
 {
   invoked_peratom = update->ntimestep;
+  if (evaluated != update->ntimestep) evaluate();
+}
+
+void ComputeDust::compute_local()
+{
+  invoked_local = update->ntimestep;
   if (evaluated != update->ntimestep) evaluate();
 }
 
@@ -265,63 +315,126 @@ void ComputeDust::evaluate()
     if (ra != rb) up[std::max(ra, rb)] = std::min(ra, rb);
   }
 
-  // 4. fragment sizes and masses
+  // 4. per-fragment sums, each combined on the fragment's owner (ID modulo nprocs):
+  //    one MPI_Alltoallv there, one back with the size and dust flag
 
-  std::map<tagint, std::pair<double, double>> local;    // fragment ID -> (size, mass)
+  std::unordered_map<tagint, Sums> mine;    // fragment ID -> sums over my atoms
   for (int i = 0; i < nlocal; i++) {
     fragments[i][FRAGMENT_ID] = fragments[i][FRAGMENT_SIZE] = fragments[i][DUST_FLAG] = 0.0;
     if (!(mask[i] & groupbit)) continue;
     const tagint id = root((tagint) label[i]);
     fragments[i][FRAGMENT_ID] = id;
-    auto &entry = local[id];
-    entry.first += 1.0;
-    entry.second += atom->rmass ? atom->rmass[i] : atom->mass[type[i]];
+    const double m = atom->rmass ? atom->rmass[i] : atom->mass[type[i]];
+    double xu[3];
+    domain->unmap(x[i], atom->image[i], xu);
+    Sums &sums = mine[id];
+    sums[SIZE] += 1.0;
+    sums[MASS] += m;
+    for (int d = 0; d < 3; d++) {
+      sums[MX + d] += m * xu[d];
+      sums[MV + d] += m * atom->v[i][d];
+    }
   }
-  std::vector<double> packed;
-  for (const auto &kv : local) packed.insert(packed.end(), {(double) kv.first, kv.second.first,
-                                                            kv.second.second});
-  const std::vector<double> allpacked = allgatherv(packed, MPI_DOUBLE, world);
-  std::map<tagint, std::pair<double, double>> global;
-  for (size_t k = 0; k < allpacked.size(); k += 3) {
-    auto &entry = global[(tagint) allpacked[k]];
-    entry.first += allpacked[k + 1];
-    entry.second += allpacked[k + 2];
+  const int nprocs = comm->nprocs;
+  std::vector<std::vector<double>> outbox(nprocs);    // (ID, sums) per owner
+  for (const auto &kv : mine) {
+    auto &box = outbox[kv.first % nprocs];
+    box.push_back((double) kv.first);
+    box.insert(box.end(), kv.second.begin(), kv.second.end());
+  }
+  std::vector<int> incounts;
+  const std::vector<double> inbox = alltoallv(outbox, incounts, world);
+
+  std::map<tagint, Sums> owned;    // the fragments I own, by ID
+  for (size_t k = 0; k < inbox.size(); k += RECORD) {
+    Sums &sums = owned[(tagint) inbox[k]];
+    for (int c = 0; c < NSUMS; c++) sums[c] += inbox[k + 1 + c];
   }
 
-  // the body: the largest fragment (the smallest ID among equals)
-  tagint body = 0;
-  double bodysize = 0.0, groupmass = 0.0;
-  for (const auto &kv : global) {
-    groupmass += kv.second.second;
-    if (kv.second.first > bodysize) {
-      bodysize = kv.second.first;
-      body = kv.first;
+  // the body: the largest fragment, the smallest ID among equals
+  double mybody[2] = {0.0, 0.0};    // (size, -ID) of my largest, then everybody's
+  for (const auto &kv : owned)
+    if (kv.second[SIZE] > mybody[0]) {
+      mybody[0] = kv.second[SIZE];
+      mybody[1] = -(double) kv.first;
     }
-  }
+  double body[2];
+  MPI_Allreduce(&mybody[0], &body[0], 1, MPI_DOUBLE, MPI_MAX, world);
+  if (mybody[0] < body[0]) mybody[1] = -(double) MAXTAGINT;
+  MPI_Allreduce(&mybody[1], &body[1], 1, MPI_DOUBLE, MPI_MAX, world);
+  const tagint bodyid = (tagint) -body[1];
   auto is_dust = [&](tagint id, double size) {
-    return maxsize > 0 ? size <= (double) maxsize : id != body;
+    return maxsize > 0 ? size <= (double) maxsize : id != bodyid;
   };
-  double ndust = 0.0, nfrag_dust = 0.0, dustmass = 0.0;
-  for (const auto &kv : global)
-    if (is_dust(kv.first, kv.second.first)) {
-      ndust += kv.second.first;
-      nfrag_dust += 1.0;
-      dustmass += kv.second.second;
+
+  double totals[5] = {0.0, 0.0, 0.0, 0.0, 0.0};    // dust atoms, fragments, mass; mass; fragments
+  nrows = 0;
+  for (const auto &kv : owned) {
+    const bool dust = is_dust(kv.first, kv.second[SIZE]);
+    if (dust) {
+      totals[0] += kv.second[SIZE];
+      totals[1] += 1.0;
+      totals[2] += kv.second[MASS];
     }
+    totals[3] += kv.second[MASS];
+    totals[4] += 1.0;
+    if (dust || !dust_rows) nrows++;
+  }
+  double sums[5];
+  MPI_Allreduce(totals, sums, 5, MPI_DOUBLE, MPI_SUM, world);
+
+  // local rows: one per fragment I own (dust only with rows dust), sorted by ID
+  if (nrows > maxrows) {
+    memory->destroy(rows);
+    maxrows = nrows;
+    memory->create(rows, maxrows, NCOLS, "dust:rows");
+  }
+  array_local = rows;
+  size_local_rows = nrows;
+  int r = 0;
+  for (const auto &kv : owned) {
+    const Sums &s = kv.second;
+    const bool dust = is_dust(kv.first, s[SIZE]);
+    if (dust_rows && !dust) continue;
+    double *row = rows[r++];
+    row[0] = kv.first;
+    row[1] = s[SIZE];
+    row[2] = s[MASS];
+    for (int d = 0; d < 3; d++) {
+      row[3 + d] = s[MX + d] / s[MASS];
+      row[6 + d] = s[MV + d] / s[MASS];
+    }
+    row[9] = dust ? 1.0 : 0.0;
+  }
+
+  // back to the atoms: (size, dust flag) for each ID each processor sent, in its order
+  std::vector<std::vector<double>> replies(nprocs);
+  for (int p = 0, k = 0; p < nprocs; p++)
+    for (int n = 0; n < incounts[p] / RECORD; n++, k += RECORD) {
+      const tagint id = (tagint) inbox[k];
+      const double size = owned[id][SIZE];
+      replies[p].push_back(size);
+      replies[p].push_back(is_dust(id, size) ? 1.0 : 0.0);
+    }
+  std::vector<int> replycounts;
+  const std::vector<double> answers = alltoallv(replies, replycounts, world);
+  std::unordered_map<tagint, std::pair<double, double>> mysizes;    // answers come grouped
+  for (int p = 0, a = 0; p < nprocs; p++)                            // by owner, in my order
+    for (size_t k = 0; k < outbox[p].size(); k += RECORD, a += 2)
+      mysizes[(tagint) outbox[p][k]] = {answers[a], answers[a + 1]};
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
-    const tagint id = (tagint) fragments[i][FRAGMENT_ID];
-    const double size = global[id].first;
-    fragments[i][FRAGMENT_SIZE] = size;
-    fragments[i][DUST_FLAG] = is_dust(id, size) ? 1.0 : 0.0;
+    const auto &answer = mysizes[(tagint) fragments[i][FRAGMENT_ID]];
+    fragments[i][FRAGMENT_SIZE] = answer.first;
+    fragments[i][DUST_FLAG] = answer.second;
   }
 
-  vector[0] = ndust;
-  vector[1] = nfrag_dust;
-  vector[2] = dustmass;
-  vector[3] = groupmass > 0.0 ? dustmass / groupmass : 0.0;
-  vector[4] = bodysize;
-  vector[5] = global.size();
+  vector[0] = sums[0];
+  vector[1] = sums[1];
+  vector[2] = sums[2];
+  vector[3] = sums[3] > 0.0 ? sums[2] / sums[3] : 0.0;
+  vector[4] = body[0];
+  vector[5] = sums[4];
 }
 
 /* ---------------------------------------------------------------------- */
@@ -339,6 +452,6 @@ void ComputeDust::unpack_forward_comm(int n, int first, double *buf)
 
 double ComputeDust::memory_usage()
 {
-  return (double) nmax * 3 * sizeof(double) + parent.capacity() * sizeof(int) +
-      label.capacity() * sizeof(double);
+  return (double) nmax * 3 * sizeof(double) + (double) maxrows * NCOLS * sizeof(double) +
+      parent.capacity() * sizeof(int) + label.capacity() * sizeof(double);
 }

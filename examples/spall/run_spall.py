@@ -5,7 +5,9 @@ alpha a = 6) and Lennard-Jones on fcc, and the aluminium clusters on the 2D tria
 
     source build/env.sh; /usr/bin/python3 examples/spall/run_spall.py
 
-Writes results.md and spall.png next to this file.
+Writes results.md and spall.png next to this file; then the spall records (free-surface
+velocity histories with their pull-back, x-t diagrams) of ensembles at a few impact speeds,
+run in runs/: records.md and spall_records.png.
 """
 import os
 import time
@@ -17,6 +19,7 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.dirname(HERE))
 from lammps_driver import script  # noqa: E402
+from shock_records import XT, plot_xt, pull_back  # noqa: E402
 CASES = {  # label: in.spall settings
     "Morse, alpha a = 3.76 (aluminium clusters)": {"pot": "al-cluster-10um"},
     "Morse, alpha a = 6": {"pot": "morse-lj-match"},
@@ -29,7 +32,8 @@ RATIOS = [round(0.6 + 0.05 * k, 2) for k in range(21)]   # v / vd = 0.6 ... 1.6
 def run(ratio, pot="al-cluster-10um", **var):
     """One impact; returns spall (bool), the spalled share of the target and the wall time."""
     start = time.time()
-    with script(os.path.join(HERE, "in.spall"), {"ratio": ratio, "pot": pot, **var}) as lmp:
+    with script(os.path.join(HERE, "in.spall"), {"ratio": ratio, "pot": pot, "records": 0,
+                                                 **var}) as lmp:
         large = lmp.extract_variable("large")
         parts = np.array(lmp.gather("c_parts", 1, 3)).reshape(-1, 3)
         x = np.array(lmp.gather_atoms("x", 1, 3)).reshape(-1, 3)[:, 0]
@@ -41,6 +45,103 @@ def run(ratio, pot="al-cluster-10um", **var):
         rear = max(ids, key=lambda i: x[parts[:, 0] == i].mean())
         rear_share = np.sum(parts[:, 0] == rear) / np.sum(intarget)
     return {"spall": large >= 2, "share": rear_share, "seconds": time.time() - start}
+
+
+# the records: (label, in.spall settings, longitudinal speed / v0 along the impact: Krivtsov &
+# Krivtsova's Table 2, fcc along the fourfold axis 1.00, the triangular lattice 1.06)
+RECORDS = [("aluminium clusters, fcc [100], 4x4 cells", {"pot": "al-cluster-10um", "cells": 4}, 1.00),
+           ("aluminium clusters, 2D triangular, 16 cells", {"pot": "al-cluster-10um", "dim": 2,
+                                                            "cells": 16}, 1.06)]
+RECORD_RATIOS = [1.3, 1.5, 2.0]
+SEEDS = [1, 2, 3]
+
+
+def record(ratio, seed, lam, root=os.path.join(HERE, "runs"), **var):
+    """One impact with records (in a folder under root): the free-surface velocity history,
+    its pull-back dU and the spall strength 1/2 rho0 c0 dU (rho0 from the x-t density of the
+    target at the start, c0 = lam v0), next to the largest tension of the x-t virial
+    pressure."""
+    workdir = os.path.join(root, "-".join(f"{k}{v}" for k, v in
+                                          sorted(dict(var, ratio=ratio, seed=seed).items())))
+    os.makedirs(workdir, exist_ok=True)
+    with script(os.path.join(HERE, "in.spall"), {"ratio": ratio, "seed": seed, **var}, workdir,
+                "log.lammps") as lmp:
+        r = {k: float(lmp.extract_variable(k)) for k in ("v", "vd", "c0", "large", "cell", "flyer")}
+        r["dt"] = lmp.extract_global("dt")
+        # 2D: densities and pressures per area and per length; per volume over the thickness
+        thick = lmp.extract_global("boxzhi") - lmp.extract_global("boxzlo")
+        r["per"] = thick if var.get("dim") == 2 else 1.0
+    xt = XT(os.path.join(workdir, "spall.xt"), r["dt"])
+    xt.density /= r["per"]
+    xt.pressure /= r["per"]
+    t, v = np.loadtxt(os.path.join(workdir, "spall.visar"), usecols=(1, 2), unpack=True)
+    c0 = lam * r["c0"]
+    flyer_transit = 2 * r["flyer"] * r["cell"] / c0    # the compression pulse's duration
+    tp, vp, tm, vm = pull_back(t, v, flyer_transit)
+    target = xt.x > (r["flyer"] + 2) * r["cell"]
+    rho0 = np.nanmedian(xt.density[target, 0])
+    r.update(t=t, vfs=v, xt=xt, peak=(tp, vp), low=(tm, vm), rho0=rho0, c0l=c0,
+             sigma=0.5 * rho0 * c0 * (vp - vm), tension=-np.nanmin(xt.pressure),
+             sigma_threshold=None)
+    return r
+
+
+def records_section(thresholds):
+    out = ["## Spall records: free-surface velocity, pull-back and spall strength", "",
+           "| lattice | impact / vd | spall (runs) | peak U_fs (m/s) | pull-back dU (m/s) | "
+           "spall strength 1/2 rho0 c0 dU (GPa) | largest virial tension (GPa) | "
+           "1/2 rho0 c0 v at the threshold (GPa) |", "|---|---|---|---|---|---|---|---|"]
+    shown = {}
+    for label, settings, lam in RECORDS:
+        for ratio in RECORD_RATIOS:
+            runs = [record(ratio, seed, lam, **settings) for seed in SEEDS]
+            shown[(label, ratio)] = runs[0]
+
+            def ms(values):
+                return f"{np.mean(values):.2f} ± {np.std(values, ddof=1):.2f}"
+            dU = [r["peak"][1] - r["low"][1] for r in runs]
+            thr = thresholds.get(label)
+            at_threshold = (0.5 * runs[0]["rho0"] * runs[0]["c0l"] * thr * runs[0]["vd"] / 1e9
+                            if thr else float("nan"))
+            out.append(f"| {label} | {ratio} | {sum(r['large'] >= 2 for r in runs)}/{len(runs)} | "
+                       f"{np.mean([r['peak'][1] for r in runs]):.0f} | {np.mean(dU):.0f} ± "
+                       f"{np.std(dU, ddof=1):.0f} | {ms([r['sigma'] / 1e9 for r in runs])} | "
+                       f"{ms([r['tension'] / 1e9 for r in runs])} | {at_threshold:.2f} |")
+    out += ["", f"Ensembles of {len(SEEDS)} seeds (1 m/s thermal start), mean ± sd; rho0 from "
+            "the x-t density of the target at the start, c0 = v0 (fcc [100]) or 1.06 v0 "
+            "(triangular), v0 from compute pair/params; the threshold from the sweep above "
+            "(2x2 cells).", ""]
+    plot_records(shown)
+    return out
+
+
+def plot_records(shown):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig = plt.figure(figsize=(14, 8))
+    grid = fig.add_gridspec(2, 3)
+    for k, (label, _, _) in enumerate(RECORDS):
+        ax = fig.add_subplot(grid[0, k])
+        for ratio in RECORD_RATIOS:
+            r = shown[(label, ratio)]
+            line, = ax.plot(r["t"] * 1e9, r["vfs"], lw=0.8, label=f"{ratio} vd")
+            ax.plot([r["peak"][0] * 1e9, r["low"][0] * 1e9], [r["peak"][1], r["low"][1]], "o",
+                    color=line.get_color())
+        ax.set_xlabel("time (ns)")
+        ax.set_ylabel("free-surface velocity (m/s)")
+        ax.set_title(label, fontsize=9)
+        ax.legend(fontsize=8)
+    r = shown[(RECORDS[0][0], 1.5)]
+    axes = [fig.add_subplot(grid[1, k]) for k in range(3)]
+    plot_xt(fig, axes, r["xt"], "fcc [100], 1.5 vd: impact, release fans, spall plane")
+    ax = fig.add_subplot(grid[0, 2])
+    ax.axis("off")
+    ax.text(0, 0.5, "dots: peak and pull-back minimum\n(running mean of 5 records)\n\n"
+            "spall strength = 1/2 rho0 c0 (U_peak - U_min)", fontsize=10)
+    fig.tight_layout()
+    fig.savefig(os.path.join(HERE, "spall_records.png"), dpi=75)
+    plt.close(fig)
 
 
 def main():
@@ -63,6 +164,8 @@ def main():
     out += ["", f"Flyer 10 cells, target 20 cells (fcc [100], 2x2 cells, 480 clusters; 2D: 4 cells, "
             f"244 clusters), cut at 1.3 a; impact speeds {RATIOS[0]} ... {RATIOS[-1]} vd in steps "
             f"of 0.05; {len(RATIOS) * len(CASES)} runs in {time.time() - start:.0f} s."]
+    thresholds = {RECORDS[0][0]: table[0][1], RECORDS[1][0]: table[3][1]}
+    out += [""] + records_section(thresholds)
     open(os.path.join(HERE, "results.md"), "w").write("\n".join(out) + "\n")
 
     import matplotlib

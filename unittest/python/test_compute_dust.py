@@ -172,6 +172,7 @@ BAD = [
     ("maxsize 0", "maxsize must be >= 1"),
     ("cutoff", "keyword cutoff needs a value"),
     ("size 3", "unknown keyword 'size'"),
+    ("rows body", "rows must be all or dust"),
 ]
 
 
@@ -215,3 +216,105 @@ def test_ring_through_processor_and_periodic_boundaries_is_one_fragment(tmp_path
     body, nfrag, dust, inring = last_thermo(run_lmp(tmp_path, "\n".join(lines), nprocs),
                                             ["c_d[5]", "c_d[6]", "c_d[1]", "c_inring"])
     assert (body, nfrag, dust, inring) == (40, 2, 1, 40)
+
+
+# the fractured block with two masses, shifted across the periodic boundaries (image flags),
+# with random velocities: fragments with distinct masses, centres and velocities
+MOVING = FRACTURED[:4] + ["create_box 2 box", "create_atoms 1 box", "mass 1 1.0", "mass 2 2.5",
+                          "set type 1 type/fraction 2 0.3 5"] + FRACTURED[7:] + [
+    "displace_atoms all move 3.3 1.7 -2.2 units box", "velocity all create 0.3 17 loop geom mom no"]
+COLS = ["id", "size", "mass", "x", "y", "z", "vx", "vy", "vz", "dust"]
+
+
+def local_rows(lmp, cid):
+    rows = lmp.numpy.extract_compute(cid, 2, 2)
+    return np.array(rows, dtype=float).reshape(-1, len(COLS))
+
+
+def test_local_rows_equal_stock_chunk_computes():
+    """One local row per fragment: ID, size, mass, centre of mass (unwrapped) and its velocity,
+    dust flag, equal to compute cluster/atom chunks with com/chunk, vcm/chunk and
+    property/chunk; `rows dust` keeps the dust rows only."""
+    with session() as lmp:
+        lmp.commands_list(MOVING)
+        lmp.commands_list([
+            "compute d all dust", "compute dd all dust rows dust",
+            "compute ca all cluster/atom 1.25",
+            "compute cc all chunk/atom c_ca compress yes nchunk every",
+            "compute com all com/chunk cc", "compute vcm all vcm/chunk cc",
+            "compute n all property/chunk cc count id",
+            "variable m atom mass", "compute mass all reduce sum v_m",
+            "fix f all ave/chunk 1 1 1 cc mass norm none",
+            "thermo_style custom step c_d[1] c_dd[1]", "run 0 post no"])
+        rows, dustrows = local_rows(lmp, "d"), local_rows(lmp, "dd")
+        vec = lmp.numpy.extract_compute("d", 0, 1)[:6].copy()
+        nchunk = lmp.extract_compute("cc", 0, 0)
+        com = np.array([[lmp.extract_compute("com", 0, 2)[c][k] for k in range(3)]
+                        for c in range(int(nchunk))])
+        vcm = np.array([[lmp.extract_compute("vcm", 0, 2)[c][k] for k in range(3)]
+                        for c in range(int(nchunk))])
+        counts = np.array([lmp.extract_compute("n", 0, 2)[c][0] for c in range(int(nchunk))])
+        ids = np.array([lmp.extract_compute("n", 0, 2)[c][1] for c in range(int(nchunk))])
+        masses = np.array([lmp.extract_fix("f", 0, 2, c, 2) for c in range(int(nchunk))])
+        boxmass = lmp.extract_compute("mass", 0, 0)
+        images = np.array(lmp.gather_atoms("image", 0, 1))
+    assert np.any(images != 512 * (1 + 1024 + 1024 ** 2))    # some atoms crossed a boundary
+    assert len(rows) == nchunk == vec[5] > 10
+    rows = rows[np.argsort(rows[:, 0])]
+    assert np.array_equal(rows[:, 0], ids) and np.array_equal(rows[:, 1], counts)
+    assert rows[:, 2] == pytest.approx(masses, rel=1e-14)
+    assert rows[:, 3:6] == pytest.approx(com, rel=1e-12, abs=1e-12)
+    assert rows[:, 6:9] == pytest.approx(vcm, rel=1e-12, abs=1e-14)
+    assert len(np.unique(rows[:, 2])) > 3    # fragments of both masses
+    body = np.argmax(rows[:, 1])
+    assert rows[body, 9] == 0 and np.all(np.delete(rows[:, 9], body) == 1)
+    assert rows[:, 2].sum() == pytest.approx(boxmass, rel=1e-14)
+    assert np.array_equal(dustrows[np.argsort(dustrows[:, 0])], np.delete(rows, body, axis=0))
+    assert dustrows[:, 2].sum() == pytest.approx(vec[2], rel=1e-14)
+
+
+def test_local_rows_feed_stock_histograms():
+    """The fragment size distribution and the dust's mass against velocity are stock one-liners:
+    fix ave/histo on the size column, fix ave/histo/weight on vx weighted by mass."""
+    with session() as lmp:
+        lmp.commands_list(MOVING)
+        lmp.commands_list([
+            "compute d all dust", "compute dd all dust rows dust",
+            "fix sizes all ave/histo 1 1 1 0.5 20.5 20 c_d[2] mode vector kind local",
+            "fix spectrum all ave/histo/weight 1 1 1 -2 2 8 c_dd[7] c_dd[3] mode vector "
+            "kind local", "run 0 post no"])
+        rows, dustrows = local_rows(lmp, "d"), local_rows(lmp, "dd")
+        sizes = [lmp.extract_fix("sizes", 0, 2, b, 1) for b in range(20)]
+        spectrum = [lmp.extract_fix("spectrum", 0, 2, b, 1) for b in range(8)]
+    expect, _ = np.histogram(rows[:, 1], bins=np.linspace(0.5, 20.5, 21))
+    assert np.array_equal(sizes, expect) and sum(sizes) > 10
+    mass, _ = np.histogram(dustrows[:, 6], bins=np.linspace(-2, 2, 9), weights=dustrows[:, 2])
+    assert spectrum == pytest.approx(mass, rel=1e-12)
+
+
+@pytest.mark.parametrize("nprocs", [1, 2, 4])
+def test_local_rows_sum_to_group_mass_and_momentum(tmp_path, nprocs):
+    """dump local of the fragments on 1, 2 and 4 ranks: the masses add to the group's mass,
+    the momenta to its momentum, and the rows are the serial ones."""
+    script = "\n".join([
+        f"plugin load {PLUGIN}", *MOVING, "compute d all dust",
+        "dump rows all local 1 rows.txt c_d[1] c_d[2] c_d[3] c_d[4] c_d[5] c_d[6] c_d[7] "
+        "c_d[8] c_d[9] c_d[10]", "dump_modify rows format float %.17g",
+        "variable M equal mass(all)",
+        "variable px equal vcm(all,x)*v_M", "variable py equal vcm(all,y)*v_M",
+        "variable pz equal vcm(all,z)*v_M",
+        "thermo_style custom step v_M v_px v_py v_pz", "thermo_modify format float %.17g",
+        "run 0"])
+    M, *p = last_thermo(run_lmp(tmp_path, script, nprocs), ["v_M", "v_px", "v_py", "v_pz"])
+    rows = np.loadtxt(tmp_path / "rows.txt", skiprows=9)
+    assert len(rows) > 10 and len(np.unique(rows[:, 0])) == len(rows)
+    assert rows[:, 2].sum() == pytest.approx(M, rel=1e-14)
+    momentum = (rows[:, 2:3] * rows[:, 6:9]).sum(axis=0)
+    assert momentum == pytest.approx(p, abs=1e-12 * M)
+    assert np.abs(p).max() > 1e-3 * M    # not the trivial zero
+    serial_file = tmp_path / f"serial{nprocs}.txt"
+    if nprocs > 1:
+        run_lmp(tmp_path, script.replace("rows.txt", serial_file.name))
+        serial = np.loadtxt(serial_file, skiprows=9)
+        order, sorder = np.argsort(rows[:, 0]), np.argsort(serial[:, 0])
+        assert rows[order] == pytest.approx(serial[sorder], rel=1e-12, abs=1e-12)

