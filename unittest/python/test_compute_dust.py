@@ -318,3 +318,32 @@ def test_local_rows_sum_to_group_mass_and_momentum(tmp_path, nprocs):
         serial = np.loadtxt(serial_file, skiprows=9)
         order, sorder = np.argsort(rows[:, 0]), np.argsort(serial[:, 0])
         assert rows[order] == pytest.approx(serial[sorder], rel=1e-12, abs=1e-12)
+
+
+@pytest.mark.parametrize("units,length,mass,speed", [("si", 1e-5, 2.3e-12, 1e3),
+                                                      ("metal", 2.5, 26.98, 10.0)])
+def test_local_rows_carry_mass_position_velocity_units(units, length, mass, speed):
+    """A dimer of two masses and a single atom, with velocities, in units si (aluminium
+    clusters) and metal (aluminium atoms): the rows are the closed-form centre of mass and
+    its velocity, in the style's own units."""
+    with session() as lmp:
+        lmp.commands_list([
+            f"units {units}", "atom_modify map array",
+            f"region box block 0 {10 * length!r} 0 {10 * length!r} 0 {10 * length!r} units box",
+            "create_box 2 box", f"mass 1 {mass!r}", f"mass 2 {3 * mass!r}",
+            f"pair_style zero {1.2 * length!r}", "pair_coeff * *",
+            f"neighbor {0.2 * length!r} bin",
+            f"create_atoms 1 single {2 * length!r} {2 * length!r} {2 * length!r} units box",
+            f"create_atoms 2 single {3 * length!r} {2 * length!r} {2 * length!r} units box",
+            f"create_atoms 1 single {7 * length!r} {7 * length!r} {7 * length!r} units box",
+            "group first id 1", "group second id 2", "group third id 3",
+            f"velocity first set {speed!r} 0 0 units box",
+            f"velocity second set {-speed!r} {speed!r} 0 units box",
+            f"velocity third set 0 0 {2 * speed!r} units box",
+            "compute d all dust", "run 0 post no"])
+        rows = local_rows(lmp, "d")
+    rows = rows[np.argsort(rows[:, 0])]
+    dimer = [1, 2, 4 * mass, 2.75 * length, 2 * length, 2 * length,
+             -0.5 * speed, 0.75 * speed, 0.0, 0]
+    single = [3, 1, mass, 7 * length, 7 * length, 7 * length, 0.0, 0.0, 2 * speed, 1]
+    assert rows == pytest.approx(np.array([dimer, single]), rel=1e-14, abs=1e-14 * speed)
