@@ -16,11 +16,9 @@ import os
 import sys
 import time
 
-import numpy as np
-
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
-from run_sweep import PAPER_UCR, run_one  # noqa: E402
+from run_sweep import run_one  # noqa: E402
 
 SEEDS = [1, 2, 3, 4, 5]
 # the README's grids, extended down where a model dusts at the lowest speed of the old grid

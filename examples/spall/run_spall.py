@@ -81,8 +81,7 @@ def record(ratio, seed, lam, root=os.path.join(HERE, "runs"), **var):
     target = xt.x > (r["flyer"] + 2) * r["cell"]
     rho0 = np.nanmedian(xt.density[target, 0])
     r.update(t=t, vfs=v, xt=xt, peak=(tp, vp), low=(tm, vm), rho0=rho0, c0l=c0,
-             sigma=0.5 * rho0 * c0 * (vp - vm), tension=-np.nanmin(xt.pressure),
-             sigma_threshold=None)
+             sigma=0.5 * rho0 * c0 * (vp - vm), tension=-np.nanmin(xt.pressure))
     return r
 
 
