@@ -16,6 +16,7 @@
 #include "fix_viscous_relative.h"
 #include "pair_spline.h"
 #include "register_pair.h"
+#include "version_check.h"
 
 #include "comm.h"
 #include "info.h"
@@ -31,6 +32,11 @@ int plugin_load(const char *, LAMMPS *);    // PLUGIN/plugin.h
 
 using namespace LAMMPS_NS;
 using namespace ClusterDyn;
+
+// the LAMMPS version this file is built for; only the test of the version check sets another
+#ifndef CLUSTERDYN_BUILT_FOR
+#define CLUSTERDYN_BUILT_FOR LAMMPS_VERSION
+#endif
 
 namespace {
 
@@ -93,6 +99,7 @@ Compute *create_compute_pair_params(LAMMPS *lmp, int narg, char **arg)
 
 extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
 {
+  if (!host_version_matches(lmp, CLUSTERDYN_BUILT_FOR, "clusterdynplugin.so")) return;
   auto register_plugin = (lammpsplugin_regfunc) regfunc;
   register_pair<MorseLaw>(lmp, handle, register_plugin);
   register_pair<LJLaw>(lmp, handle, register_plugin);

@@ -10,10 +10,13 @@
 #   CLUSTERDYN_LAMMPS_BUILD=/path/to/build    use an existing CMake build of that tree (with
 #                                             liblammps.so, lmp, PLUGIN, MPI) as it is
 #   CLUSTERDYN_CACHE=/path             cache folder (default ~/.cache/clusterdyn)
+#   CLUSTERDYN_BUILD_DIR=/path         the plugin's build folder (default build/ of this tree;
+#                                      tools/check_lammps_version.sh uses one per version)
 set -euo pipefail
 
 top=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 cache=${CLUSTERDYN_CACHE:-${XDG_CACHE_HOME:-$HOME/.cache}/clusterdyn}
+plugin_bld=${CLUSTERDYN_BUILD_DIR:-$top/build}
 jobs=$(nproc)
 
 lammps_version=20250204
@@ -69,13 +72,22 @@ fetch_lammps_source() {
   echo "$src"
 }
 
+version_of() {  # $1 = source tree; prints its version as YYYYMMDD (from src/version.h)
+  local v
+  v=$(sed -n 's/^#define LAMMPS_VERSION "\(.*\)"/\1/p' "$1/src/version.h" 2>/dev/null)
+  date -d "$v" +%Y%m%d 2>/dev/null || { say "no LAMMPS version in $1/src/version.h" >&2; exit 1; }
+}
+
 build_lammps() {  # $1 = source tree; prints the build folder
   local src=$1
   local key
   key=$(printf '%s\n' "$src" "${lammps_cmake_opts[@]}" | sha256sum | cut -c1-12)
-  local bld=$cache/lammps-$lammps_version-$key
+  local ver
+  ver=$(version_of "$src") || exit 1
+  local bld=$cache/lammps-$ver-$key
   if [ -f "$bld/.complete" ]; then echo "$bld"; return; fi
   say "building LAMMPS in $bld (several minutes on 2 cores)" >&2
+  mkdir -p "$cache"
   cmake -S "$src/cmake" -B "$bld" -G Ninja "${lammps_cmake_opts[@]}" >"$bld.configure.log" 2>&1 \
     || { tail -30 "$bld.configure.log" >&2; exit 1; }
   cmake --build "$bld" -j "$jobs" >"$bld.build.log" 2>&1 || { tail -40 "$bld.build.log" >&2; exit 1; }
@@ -100,11 +112,11 @@ lmp_libs=$(ldd "$lmp_bld/lmp")
   || { say "$lmp_bld/lmp does not load its own liblammps.so.0:"; grep lammps <<<"$lmp_libs"; exit 1; }
 
 # the plugin: reconfigure only when the LAMMPS build changed
-mkdir -p "$top/build"
-if [ ! -f "$top/build/build.ninja" ] || ! grep -qs "LAMMPS_BUILD_DIR:PATH=$lmp_bld\$" "$top/build/CMakeCache.txt"; then
-  cmake -S "$top" -B "$top/build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
-    -DLAMMPS_ROOT="$lmp_src" -DLAMMPS_BUILD_DIR="$lmp_bld" >"$top/build/configure.log" 2>&1 \
-    || { tail -30 "$top/build/configure.log"; exit 1; }
+mkdir -p "$plugin_bld"
+if [ ! -f "$plugin_bld/build.ninja" ] || ! grep -qs "LAMMPS_BUILD_DIR:PATH=$lmp_bld\$" "$plugin_bld/CMakeCache.txt"; then
+  cmake -S "$top" -B "$plugin_bld" -G Ninja -DCMAKE_BUILD_TYPE=Release \
+    -DLAMMPS_ROOT="$lmp_src" -DLAMMPS_BUILD_DIR="$lmp_bld" >"$plugin_bld/configure.log" 2>&1 \
+    || { tail -30 "$plugin_bld/configure.log"; exit 1; }
 fi
-cmake --build "$top/build" -j "$jobs" >"$top/build/build.log" 2>&1 || { tail -40 "$top/build/build.log"; exit 1; }
-say "ready: source $top/build/env.sh"
+cmake --build "$plugin_bld" -j "$jobs" >"$plugin_bld/build.log" 2>&1 || { tail -40 "$plugin_bld/build.log"; exit 1; }
+say "ready: source $plugin_bld/env.sh"

@@ -6,7 +6,7 @@ set -uo pipefail
 top=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 bash "$top/tools/bootstrap.sh" || { echo "0 passed, 1 failed"; exit 1; }
 
-cd "$top/build" || exit 1
+cd "${CLUSTERDYN_BUILD_DIR:-$top/build}" || exit 1
 rm -rf test-results
 ctest --output-on-failure --timeout 1800 -j "$(nproc)" "$@"
 ctest_rc=$?
