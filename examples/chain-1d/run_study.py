@@ -34,7 +34,9 @@ def run(**var):
                "removed": lmp.extract_variable("removed"), "pchain": lmp.extract_variable("pchain"),
                "dt": lmp.extract_global("dt"), "c0": lmp.extract_variable("c0"),
                "e_end": lmp.get_thermo("pe") + lmp.get_thermo("ke"),
-               "steps": lmp.extract_variable("steps")}
+               "steps": lmp.extract_variable("steps"),
+               "c_u": lmp.extract_compute("law", 0, 2)[0][3],      # c(u), T_min(u): the shock
+               "tmin": lmp.extract_compute("law", 0, 2)[0][4]}     # table's row for u
     dt = out["dt"]
     out["work"] = np.trapz(work[:, 0], dx=dt)     # velocity Verlet: trapezoid rule
     cumulative = np.concatenate([[0.0], np.cumsum(0.5 * dt * (work[1:, 0] + work[:-1, 0]))])

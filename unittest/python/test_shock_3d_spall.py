@@ -120,3 +120,14 @@ def test_spall_strength_from_the_pull_back_matches_the_virial_tension(tmp_path):
     assert r["large"] >= 2
     assert r["peak"][1] == pytest.approx(r["v"], rel=0.08)
     assert r["sigma"] == pytest.approx(r["tension"], rel=0.2)
+
+
+def test_spall_assumptions_thick_impactor_and_fcc_111():
+    """examples/spall/run_assumptions.py: an impactor as thick as the target does not spall it
+    at 1.5 vd (the release waves meet at its rear face); with [111] along the impact the
+    threshold drops below the [100] one (1.17 against 1.25 vd): at 1.2 vd [111] spalls and
+    [100] does not (seed 1, 1 m/s thermal start)."""
+    base = {"pot": "al-cluster-10um", "seed": 1, "vtherm": 1.0}
+    assert not run_spall.run(1.5, flyer=20, **base)["spall"]
+    assert run_spall.run(1.2, orient=111, flyer=6, target=12, **base)["spall"]
+    assert not run_spall.run(1.2, **base)["spall"]
