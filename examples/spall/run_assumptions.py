@@ -8,7 +8,7 @@ lattice's orientation, the impactor's thickness, the plates' size, and the 2D tr
 ensemble: 3 seeds (1 m/s thermal start), each swept upwards in steps of 0.05 vd from 0.6 vd to
 its first spall (confirmed by the next two speeds).
 
-    source build/env.sh; /usr/bin/python3 examples/spall/run_assumptions.py     # about 10 min
+    source build/env.sh; /usr/bin/python3 examples/spall/run_assumptions.py     # about 2 min
 
 Writes assumptions.md next to this file.
 """
