@@ -56,7 +56,7 @@ target_link_libraries(lmp lammps)
 """
 
 
-def test_source_override_builds_into_a_fresh_cache_named_by_its_version(tmp_path):
+def test_overrides_work_from_a_fresh_cache_named_by_the_version(tmp_path):
     """A stand-in LAMMPS tree (version 1 Jan 2020, a CMake project that makes liblammps.so.0
     and lmp): the bootstrap must create the missing cache folder, build the tree into
     lammps-20200101-<key> and get as far as configuring the plugin (which then fails: the
@@ -77,6 +77,15 @@ def test_source_override_builds_into_a_fresh_cache_named_by_its_version(tmp_path
     entries = [e for e in os.listdir(cache) if os.path.isdir(cache / e)]
     assert len(entries) == 1 and entries[0].startswith("lammps-20200101-"), entries
     assert (cache / entries[0] / ".complete").exists() and (cache / entries[0] / "lmp").exists()
+    assert out.returncode != 0 and "Set LAMMPS_ROOT to a LAMMPS source tree" in text
+    # the same build given as CLUSTERDYN_LAMMPS_BUILD, with another cache folder that does not
+    # exist: the bootstrap needs no cache and gets as far again
+    env.update(CLUSTERDYN_LAMMPS_BUILD=str(cache / entries[0]),
+               CLUSTERDYN_CACHE=str(tmp_path / "another" / "cache"))
+    out = subprocess.run(["bash", os.path.join(TOP, "tools", "bootstrap.sh")], env=env,
+                         capture_output=True, text=True, timeout=600)
+    text = out.stdout + out.stderr
+    assert "No such file or directory" not in text
     assert out.returncode != 0 and "Set LAMMPS_ROOT to a LAMMPS source tree" in text
 
 
