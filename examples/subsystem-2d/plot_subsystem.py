@@ -1,12 +1,16 @@
 """Plots and tables of examples/subsystem-2d from the runs' tables: strip.png (stress-strain
 and deflection of the clamped strip, Hooke's slope from the law, Euler's and Timoshenko's
 buckling strains) and plate_faces.png (the end-face stresses of the Fig. 2 plate at each
-resolution next to SfePy's solution for Poisson 0.3 and 1/3).  Run after the inputs
-(README.md says how)."""
+resolution next to SfePy's solution for Poisson 0.3 and 1/3), upset.png and the ensemble
+table of section 3.  Run after the inputs (README.md says how): it reads what they write, which
+is not tracked: strip_load.dat, strip_unload.dat, strip_load.dat.dump (in.strip),
+plate_faces_*.txt (in.plate), fe_faces_nu*.txt (plate_fe.py), upset-*.dat and upset-*.dump
+(run_upset.sh); and upset_runs.txt (run_upset.sh; tracked)."""
 import glob
 import math
 import os
 import re
+import sys
 
 import matplotlib
 matplotlib.use("Agg")
@@ -221,7 +225,26 @@ def upset_ensembles():
               f"{cell(5, 1.0, '.4f')} |")
 
 
+NEEDS = {"in.strip (README.md)": ["strip_load.dat", "strip_unload.dat", "strip_load.dat.dump"],
+         "in.plate (README.md)": ["plate_faces_*.txt"],
+         "plate_fe.py": ["fe_faces_nu0.3.txt", "fe_faces_nu0.333.txt"],
+         "run_upset.sh": [f"upset-{n}.{e}" for n in ("slow-6", "fast-6", "fast-6-inertia", "slow",
+                                                     "fast", "fast-inertia", "fast-slide")
+                          for e in ("dat", "dump")] + ["upset_runs.txt"]}
+
+
+def missing_inputs():
+    """The run outputs this script reads that are not there, by the run that writes them."""
+    return {run: [n for n in names if not glob.glob(os.path.join(HERE, n))]
+            for run, names in NEEDS.items()
+            if any(not glob.glob(os.path.join(HERE, n)) for n in names)}
+
+
 if __name__ == "__main__":
+    missing = missing_inputs()
+    if missing:
+        sys.exit("plot_subsystem.py: run first (the outputs are not tracked):\n" +
+                 "\n".join(f"  {run}: {', '.join(names)}" for run, names in missing.items()))
     strip_plot()
     plate_plot()
     upset_plot()

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# The upsetting runs of README section 3: the named runs (their tables, shapes and logs feed
-# plot_subsystem.py) and, for the plastic ones, ensembles of 5 seeds (every atom displaced by up
-# to 1e-9 a: the hops are chaotic, one run is one sample).  Summary lines: upset_runs.txt.
+# The upsetting runs of README section 3: the named runs (their tables upset-*.dat and shapes
+# upset-*.dump feed plot_subsystem.py; logs log.upset-*; none of these is tracked) and, for the
+# plastic ones, ensembles of 5 seeds (every atom displaced by up to 1e-9 a: the hops are chaotic,
+# one run is one sample).  Summary lines: upset_runs.txt (tracked: section 3's table).
 #   source ../../build/env.sh; bash run_upset.sh      # about 4 min
 set -euo pipefail
 cd "$(dirname "$0")"
