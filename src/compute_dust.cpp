@@ -24,19 +24,20 @@
 
 #include "compute_dust.h"
 
+#include "allgatherv.h"
 #include "skin_check.h"
 
 #include "atom.h"
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
-#include "fix_neigh_history.h"
 #include "force.h"
 #include "memory.h"
 #include "neigh_list.h"
 #include "neigh_request.h"
 #include "neighbor.h"
 #include "pair.h"
+#include "pair_state.h"
 #include "update.h"
 
 #include <algorithm>
@@ -52,24 +53,6 @@ enum { FRAGMENT_ID = 0, FRAGMENT_SIZE = 1, DUST_FLAG = 2 };         // per-atom 
 enum { SIZE = 0, MASS = 1, MX = 2, MV = 5 };                         // ComputeDust::Sums
 static constexpr int RECORD = 1 + ComputeDust::NSUMS;                // fragment ID, sums
 static constexpr int NCOLS = 10;                                     // local columns
-
-// every processor's entries, concatenated in rank order, on every processor
-template <class T>
-static std::vector<T> allgatherv(const std::vector<T> &mine, MPI_Datatype type, MPI_Comm world)
-{
-  int nprocs, n = mine.size();
-  MPI_Comm_size(world, &nprocs);
-  std::vector<int> counts(nprocs), displs(nprocs);
-  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
-  int total = 0;
-  for (int p = 0; p < nprocs; p++) {
-    displs[p] = total;
-    total += counts[p];
-  }
-  std::vector<T> all(total);
-  MPI_Allgatherv(mine.data(), n, type, all.data(), counts.data(), displs.data(), type, world);
-  return all;
-}
 
 // each processor's boxes[p] delivered to processor p; returns what I received, concatenated in
 // rank order, and sets recvcounts (how much came from each processor)
@@ -99,7 +82,7 @@ static std::vector<double> alltoallv(const std::vector<std::vector<double>> &box
 
 ComputeDust::ComputeDust(LAMMPS *lmp, int narg, char **arg) :
     Compute(lmp, narg, arg), cutoff_user(0.0), maxsize(0), links(0), dust_rows(0),
-    link_history(nullptr), list(nullptr), nmax(0), fragments(nullptr), nrows(0), maxrows(0),
+    state(nullptr), list(nullptr), nmax(0), fragments(nullptr), nrows(0), maxrows(0),
     rows(nullptr), evaluated(-1)
 {
   for (int iarg = 3; iarg < narg; iarg += 2) {
@@ -151,11 +134,11 @@ ComputeDust::~ComputeDust()
 void ComputeDust::init()
 {
   if (!atom->tag_enable) error->all(FLERR, "Compute dust requires atom IDs");
+  evaluated = -1;    // the atoms may have changed since (displace_atoms, delete_atoms, ...)
   if (links) {
     int dim;
-    link_history = force->pair ? (FixNeighHistory *) force->pair->extract("link_history", dim)
-                               : nullptr;
-    if (!link_history)
+    state = force->pair ? (PairState *) force->pair->extract("pair_state", dim) : nullptr;
+    if (!state)
       error->all(FLERR, "Compute dust links needs a pair style with link L (and a run or "
                  "minimization that made the links: run 0 will do)");
     return;
@@ -252,13 +235,12 @@ void ComputeDust::evaluate()
       if (!seen.second) parent[find(i)] = find(seen.first->second);
     }
   }
-  // bonds: pairs closer than the bond distance, or (links) the pair style's intact links,
-  // the flags fix neigh/history keeps for the pair style's neighbor list
-  const NeighList *bonds = links ? link_history->pair->list : list;
-  int *const *const linked = links ? link_history->firstflag : nullptr;
-  if (links && !linked)
+  // bonds: pairs closer than the bond distance, or (links) the pair style's intact links
+  if (links && !state->made())
     error->all(FLERR, "Compute dust links: the links are not made yet (they are at the setup of "
                "the first run or minimization: run 0 will do)");
+  const StateView view = links ? state->view() : StateView{list, nullptr, nullptr, 0};
+  const NeighList *bonds = view.list;
   for (int ii = 0; ii < bonds->inum; ii++) {
     const int i = bonds->ilist[ii];
     if (!(mask[i] & groupbit)) continue;
@@ -266,7 +248,7 @@ void ComputeDust::evaluate()
       const int j = bonds->firstneigh[i][jj] & NEIGHMASK;
       if (!(mask[j] & groupbit)) continue;
       if (links) {
-        if (!linked[i][jj]) continue;
+        if (!state_now(view.words[i][jj])) continue;
       } else {
         const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
         if (dx * dx + dy * dy + dz * dz >= cutsq[type[i] * ntp1 + type[j]]) continue;

@@ -12,7 +12,6 @@
 #include <vector>
 
 namespace LAMMPS_NS {
-class FixNeighHistory;
 namespace ClusterDyn {
 
   class ComputeDust : public Compute {
@@ -36,7 +35,7 @@ namespace ClusterDyn {
     bigint maxsize;            // 0: every fragment but the largest is dust
     int links;                 // bonds = the pair style's links (link L), not distances
     int dust_rows;             // local rows of the dust only (rows dust), not every fragment
-    LAMMPS_NS::FixNeighHistory *link_history;    // holds the link flags (links)
+    class PairState *state;    // the pair style's link state (links)
     std::vector<double> cutsq; // (ntypes+1)^2 bond distance squared
     class NeighList *list;
     int nmax;

@@ -2,8 +2,8 @@
    Cluster-dynamics plugin for LAMMPS: compute links/atom.
 
    Per atom, the number of intact links under a pair style with link L: the
-   flags that fix neigh/history keeps for the pair style's half neighbor
-   list, counted for both atoms of a link (a reverse communication adds the
+   pair states of the pair style's half neighbor list (PairState::view()),
+   counted for both atoms of a link (a reverse communication adds the
    ghosts' counts to their owners with newton on), as compute coord/atom
    counts neighbours.
 ------------------------------------------------------------------------- */
@@ -13,18 +13,18 @@
 #include "atom.h"
 #include "comm.h"
 #include "error.h"
-#include "fix_neigh_history.h"
 #include "force.h"
 #include "memory.h"
 #include "neigh_list.h"
 #include "pair.h"
+#include "pair_state.h"
 #include "update.h"
 
 using namespace LAMMPS_NS;
 using namespace ClusterDyn;
 
 ComputeLinksAtom::ComputeLinksAtom(LAMMPS *lmp, int narg, char **arg) :
-    Compute(lmp, narg, arg), link_history(nullptr), nmax(0), count(nullptr)
+    Compute(lmp, narg, arg), state(nullptr), nmax(0), count(nullptr)
 {
   if (narg != 3) error->all(FLERR, "Compute links/atom takes no arguments (got {})", narg - 3);
   peratom_flag = 1;
@@ -40,9 +40,8 @@ ComputeLinksAtom::~ComputeLinksAtom()
 void ComputeLinksAtom::init()
 {
   int dim;
-  link_history =
-      force->pair ? (FixNeighHistory *) force->pair->extract("link_history", dim) : nullptr;
-  if (!link_history) error->all(FLERR, "Compute links/atom needs a pair style with link L");
+  state = force->pair ? (PairState *) force->pair->extract("pair_state", dim) : nullptr;
+  if (!state) error->all(FLERR, "Compute links/atom needs a pair style with link L");
 }
 
 void ComputeLinksAtom::compute_peratom()
@@ -57,14 +56,14 @@ void ComputeLinksAtom::compute_peratom()
   }
   for (int i = 0; i < nall; i++) count[i] = 0.0;
 
-  int *const *const linked = link_history->firstflag;
-  const NeighList *list = link_history->pair->list;
   const int newton_pair = force->newton_pair;
-  if (linked) {    // nullptr before the first run made the links
+  if (state->made()) {    // before the first run's setup no pair is linked
+    const StateView links = state->view();
+    const NeighList *list = links.list;
     for (int ii = 0; ii < list->inum; ii++) {
       const int i = list->ilist[ii];
       for (int jj = 0; jj < list->numneigh[i]; jj++) {
-        if (!linked[i][jj]) continue;
+        if (!state_now(links.words[i][jj])) continue;
         const int j = list->firstneigh[i][jj] & NEIGHMASK;
         count[i] += 1.0;
         if (newton_pair || j < nlocal) count[j] += 1.0;

@@ -10,8 +10,8 @@
 #include "compute.h"
 
 namespace LAMMPS_NS {
-class FixNeighHistory;
 namespace ClusterDyn {
+  class PairState;
 
   class ComputeLinksAtom : public Compute {
    public:
@@ -24,7 +24,7 @@ namespace ClusterDyn {
     double memory_usage() override;
 
    private:
-    LAMMPS_NS::FixNeighHistory *link_history;
+    PairState *state;          // of the pair style (link L)
     int nmax;
     double *count;
   };

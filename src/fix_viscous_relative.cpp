@@ -21,7 +21,7 @@
 
 #include "fix_viscous_relative.h"
 
-#include "pair_spline.h"    // xyz3
+#include "xyz3.h"
 #include "skin_check.h"
 
 #include "atom.h"

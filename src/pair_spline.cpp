@@ -5,13 +5,12 @@
 
 #include "pair_spline.h"
 
+#include "pair_spline_kernel.h"
 #include "skin_check.h"
 
 #include "atom.h"
 #include "comm.h"
 #include "error.h"
-#include "fix_dummy.h"
-#include "fix_neigh_history.h"
 #include "force.h"
 #include "math_const.h"
 #include "memory.h"
@@ -19,7 +18,6 @@
 #include "neigh_list.h"
 #include "neigh_request.h"
 #include "neighbor.h"
-#include "output.h"
 #include "update.h"
 
 #include <cmath>
@@ -31,7 +29,9 @@ using MathConst::MY_PI;
 
 static constexpr double BIG = 1.0e300;
 
-template <class Law> PairSpline<Law>::PairSpline(LAMMPS *lmp) : Pair(lmp)
+template <class Law>
+PairSpline<Law>::PairSpline(LAMMPS *lmp) :
+    Pair(lmp), state(lmp, this, std::string("Pair style ") + Law::style, 0)
 {
   writedata = 1;
   born_matrix_enable = 1;
@@ -43,17 +43,12 @@ template <class Law> PairSpline<Law>::PairSpline(LAMMPS *lmp) : Pair(lmp)
   chain_n = 0;
   step_warned = 0;
   step_next_check = 0;
-  link_l = 0.0;
-  relink = links_made = 0;
-  fix_history = nullptr;
   beyond_contact = 1;    // fix neigh/history keeps every listed pair's flag, not only contacts
 }
 
 template <class Law> PairSpline<Law>::~PairSpline()
 {
   if (copymode) return;
-  if (fix_history) modify->delete_fix(LINK_FIX_ID);
-  else if (link_l > 0.0) modify->delete_fix(std::string(LINK_FIX_ID) + "_DUMMY");
   delete[] pvector;
   if (allocated) {
     memory->destroy(setflag);
@@ -76,119 +71,25 @@ template <class Law> PairSpline<Law>::~PairSpline()
 template <class Law> void PairSpline<Law>::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
-  LinkTally pass;
+  const StatePass pass = links.on() ? state.begin() : StatePass();
+  StateTally changes;
   dispatch(eflag, [&](auto t, auto mode, auto ev, auto e, auto n) {
-    eval<decltype(t)::value, decltype(mode)::value, decltype(ev)::value, decltype(e)::value,
-         decltype(n)::value>(pass);
+    eval<decltype(t), decltype(mode)::value, decltype(ev)::value, decltype(e)::value,
+         decltype(n)::value>(0, list->inum, (xyz3 *) atom->f[0], pass, changes,
+                             [this](int i, int j, int nlocal, int newton, double evdwl,
+                                    double fpair, double dx, double dy, double dz) {
+                               ev_tally(i, j, nlocal, newton, evdwl, 0.0, fpair, dx, dy, dz);
+                             });
   });
   if (vflag_fdotr) virial_fdotr_compute();
-  if (link_l > 0.0) link_done(pass);
+  finish_compute(changes);
+}
+
+// after the kernel, serial and /omp: the link tally, the time-step check
+template <class Law> void PairSpline<Law>::finish_compute(const StateTally &changes)
+{
+  if (links.on()) state.end(changes, pvector);
   if (neighbor->ago == 0) check_time_step();
-}
-
-/* ----------------------------------------------------------------------
-   link L: the pairs are linked at the setup of the first run (or
-   minimization) after the pair style is defined; relink yes links pairs on
-   every step
-------------------------------------------------------------------------- */
-
-template <class Law> int PairSpline<Law>::linking_now() const
-{
-  if (!links_made && update->setupflag) return LINK_INITIAL;
-  return relink ? LINK_RELINK : LINK_KEEP;
-}
-
-template <class Law> void PairSpline<Law>::link_done(const LinkTally &pass)
-{
-  if (!links_made && update->setupflag) links_made = 1;
-  link_total.broken += pass.broken;
-  link_total.formed += pass.formed;
-  link_total.ejump += pass.ejump;
-  // a restart file written at the end of this step carries the global totals
-  if (output->restart_flag && output->next_restart == update->ntimestep) consolidate_link_total();
-  pvector[0] = link_total.broken;
-  pvector[1] = link_total.formed;
-  pvector[2] = link_total.ejump;
-}
-
-template <class Law> void PairSpline<Law>::consolidate_link_total()
-{
-  double mine[3] = {link_total.broken, link_total.formed, link_total.ejump}, all[3];
-  MPI_Allreduce(mine, all, 3, MPI_DOUBLE, MPI_SUM, world);
-  link_total = LinkTally();
-  if (comm->me == 0) {
-    link_total.broken = all[0];
-    link_total.formed = all[1];
-    link_total.ejump = all[2];
-  }
-}
-
-template <class Law>
-template <int TAIL, int MODE, int EVFLAG, int EFLAG, int NEWTON_PAIR>
-void PairSpline<Law>::eval(LinkTally &links)
-{
-  constexpr bool LINKED = mode_link(MODE);
-  int *const *const touch = LINKED ? fix_history->firstflag : nullptr;
-  const int linking = LINKED ? linking_now() : LINK_KEEP;
-  const tagint *_noalias const tag = atom->tag;
-  const auto *_noalias const x = (xyz3 *) atom->x[0];
-  auto *_noalias const f = (xyz3 *) atom->f[0];
-  const int *_noalias const type = atom->type;
-  const int nlocal = atom->nlocal;
-  const double *_noalias const special_lj = force->special_lj;
-  const int ntp1 = atom->ntypes + 1;
-  const int inum = list->inum;
-  const int *_noalias const ilist = list->ilist;
-  const int *_noalias const numneigh = list->numneigh;
-  int **firstneigh = list->firstneigh;
-  double evdwl = 0.0;
-
-  for (int ii = 0; ii < inum; ii++) {
-    const int i = ilist[ii];
-    const double xtmp = x[i].x, ytmp = x[i].y, ztmp = x[i].z;
-    const SplineCoeff *_noalias const ci = coeffs + type[i] * ntp1;
-    const int *_noalias const jlist = firstneigh[i];
-    const int jnum = numneigh[i];
-    double fxtmp = 0.0, fytmp = 0.0, fztmp = 0.0;
-
-    for (int jj = 0; jj < jnum; jj++) {
-      int j = jlist[jj];
-      const double factor_lj = special_lj[sbmask(j)];
-      j &= NEIGHMASK;
-      const double delx = xtmp - x[j].x;
-      const double dely = ytmp - x[j].y;
-      const double delz = ztmp - x[j].z;
-      const double rsq = delx * delx + dely * dely + delz * delz;
-      const SplineCoeff &c = ci[type[j]];
-      double scale = 1.0;    // chain: the n-th neighbour along the chain feels Pi(r/n)
-      if (MODE == CHAIN) {
-        const tagint n = tag[i] > tag[j] ? tag[i] - tag[j] : tag[j] - tag[i];
-        if (n == 0 || n > chain_n) continue;    // n = 0: a periodic image of atom i
-        scale = chain_scale[n];
-      }
-      const double rsq_law = MODE == CHAIN ? rsq * scale : rsq;
-      double e, fpair;
-      const double w = !LINKED || NEWTON_PAIR || j < nlocal ? 1.0 : 0.5;
-      if (!pair_eval<TAIL, MODE>(c, rsq_law, LINKED ? &touch[i][jj] : nullptr, linking, w,
-                                      links, e, fpair))
-        continue;
-      if (rsq_law <= c.hardsq) singular_error(i, j, rsq);
-      fpair *= factor_lj * scale;
-      fxtmp += delx * fpair;
-      fytmp += dely * fpair;
-      fztmp += delz * fpair;
-      if (NEWTON_PAIR || j < nlocal) {
-        f[j].x -= delx * fpair;
-        f[j].y -= dely * fpair;
-        f[j].z -= delz * fpair;
-      }
-      if (EFLAG) evdwl = factor_lj * e;
-      if (EVFLAG) ev_tally(i, j, nlocal, NEWTON_PAIR, evdwl, 0.0, fpair, delx, dely, delz);
-    }
-    f[i].x += fxtmp;
-    f[i].y += fytmp;
-    f[i].z += fztmp;
-  }
 }
 
 template <class Law> void PairSpline<Law>::singular_error(int i, int j, double rsq) const
@@ -229,7 +130,7 @@ template <class Law> void PairSpline<Law>::check_time_step()
       const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
       double rsq = dx * dx + dy * dy + dz * dz;
       if (chain_n) {
-        const tagint n = tag[i] > tag[j] ? tag[i] - tag[j] : tag[j] - tag[i];
+        const tagint n = chain_distance(tag[i], tag[j]);
         if (n == 0 || n > chain_n) continue;
         rsq *= chain_scale[n];
       }
@@ -385,8 +286,7 @@ template <class Law> void PairSpline<Law>::settings(int narg, char **arg)
     error->all(FLERR, "Pair style {}: link and chain N do not combine (chain N fixes the "
                "neighbours by atom ID already)", Law::style);
   set_chain_scale();
-  link_settings_changed(new_l);
-  relink = relink_set > 0;
+  set_links(new_l, relink_set > 0);
 
   // as pair lj/cut resets explicitly set cutoffs, a new pair_style command resets every
   // per-pair rc and rs to the new global values (those of one tail mean nothing to another)
@@ -402,29 +302,26 @@ template <class Law> void PairSpline<Law>::set_chain_scale()
 }
 
 /* ----------------------------------------------------------------------
-   link L on: a dummy fix holds the place of fix neigh/history in the fix
-   list until init_style() (as the granular styles do); off again: refused,
-   the links would be lost silently
+   link L: the state is kept by a PairState; a re-issued pair_style starts
+   it afresh (doc: link); switching it off is refused (the links would be
+   lost silently)
 ------------------------------------------------------------------------- */
 
-template <class Law> void PairSpline<Law>::link_settings_changed(double new_l)
+template <class Law> void PairSpline<Law>::set_links(double l, int relink)
 {
-  const std::string dummy = std::string(LINK_FIX_ID) + "_DUMMY";
-  const bool mine = link_l > 0.0;
-  if (mine && new_l == 0.0)
+  if (links.on() && l == 0.0)
     error->all(FLERR, "Pair style {}: link cannot be switched off once set (the link state "
                "would be lost); use pair_style none first", Law::style);
-  if (!mine && new_l > 0.0) {
-    if (modify->get_fix_by_id(LINK_FIX_ID) || modify->get_fix_by_id(dummy))
-      error->all(FLERR, "Pair style {}: another pair style already keeps links (fix {}); one "
-                 "linked pair style at a time", Law::style, LINK_FIX_ID);
-    if (!atom->tag_enable) error->all(FLERR, "Pair style {}: link needs atom IDs", Law::style);
-    modify->add_fix(dummy + " all DUMMY");
-    nextra = 3;
-    pvector = new double[nextra]();
+  if (l > 0.0) {
+    state.enable();
+    if (!pvector) {
+      nextra = 3;
+      pvector = new double[nextra]();
+    }
   }
-  link_l = new_l;
-  single_enable = born_matrix_enable = link_l > 0.0 ? 0 : 1;    // they cannot see the state
+  links.l = l;
+  links.relink = relink;
+  single_enable = born_matrix_enable = links.on() ? 0 : 1;    // they cannot see the state
 }
 
 /* ----------------------------------------------------------------------
@@ -526,36 +423,9 @@ template <class Law> void PairSpline<Law>::derive(int i, int j)
     pib = d[0];
     fstar = c.kappa * fabs(d[1]);
   }
-  const double rc_rel = rc_pair[i][j] > 0.0 ? rc_pair[i][j] : rc_global;
-
-  if (tail == CUT) {
-    c.rc = rc_rel * c.a;
-  } else if (tail == WAGNER) {
-    const double disc = 16.0 + 24.0 * pib / (b * fstar);
-    if (disc < 0.0)
-      error->all(FLERR, "Pair {}: tail wagner has no cutoff for types {} {} ({}): the well is "
-                 "too wide, 16 + 24 Pi(b)/(b f*) = {:.6g} < 0", Law::style, i, j,
-                 Law::wide_well_hint, disc);
-    const double b2 = b * b;
-    c.bsq = b2;
-    c.acsq = b2 * (5.0 - sqrt(disc));
-    c.wa2 = (5.0 * b2 - c.acsq) * fstar / (8.0 * b2 * b * (c.acsq - b2));
-    c.wa3 = (3.0 * b2 - c.acsq) * fstar / (12.0 * b2 * b * (c.acsq - b2) * (c.acsq - b2));
-    c.rc = sqrt(c.acsq);
-  } else {
-    const double rs_rel = rs_pair[i][j] > 0.0 ? rs_pair[i][j] : rs_global;
-    c.rs = rs_rel > 0.0 ? rs_rel * c.a : b;
-    if (!(c.rs > 0.0))
-      error->all(FLERR, "Pair {}: tail lagunov needs a start Rs for types {} {} (pair_style "
-                 "... start Rs or pair_coeff ... rs Rs): the law has no inflection point",
-                 Law::style, i, j);
-    c.rc = rc_rel * c.a;
-    if (!(c.rc > c.rs))
-      error->all(FLERR, "Pair {}: lagunov Rc = {} a must be > its start Rs = {:.6g} a for types "
-                 "{} {}", Law::style, rc_rel, c.rs / c.a, i, j);
-    c.rssq = c.rs * c.rs;
-    c.inv_l2 = 1.0 / ((c.rc - c.rs) * (c.rc - c.rs));
-  }
+  TailShape shape{b, pib, fstar, rc_pair[i][j] > 0.0 ? rc_pair[i][j] : rc_global,
+                  rs_pair[i][j] > 0.0 ? rs_pair[i][j] : rs_global, i, j};
+  with_tail(tail, [&](auto t) { decltype(t)::template derive<Law>(c, shape, lmp); });
   c.cutsq = c.rc * c.rc;
 
   if (tail == CUT && offset_flag) {
@@ -563,16 +433,7 @@ template <class Law> void PairSpline<Law>::derive(int i, int j)
     Law::derivs(c, c.kappa * (c.rc - c.a) + c.a, d);
     c.offset = d[0];
   }
-  if (link_l > 0.0) {
-    if (link_l * c.a > c.rc)
-      error->all(FLERR, "Pair {}: link L = {} is beyond the tail end of types {} {} ({:.6g} a): a "
-                 "pair linked there would break at once", Law::style, link_l, i, j, c.rc / c.a);
-    c.linksq = link_l * link_l * c.a * c.a;
-    c.asq = c.a * c.a;
-    double f;
-    c.ea = Law::template eval<true>(c, c.asq, f);
-    c.ebreak = tail == CUT ? Law::template eval<true>(c, c.cutsq, f) - c.offset : 0.0;
-  }
+  if (links.on()) links.derive<Law>(c, tail, i, j, np1, lmp);
   if (Law::singular && c.kappa > 1.0) {    // in the chain: r/n at or inside that distance
     const double rh = c.a * (1.0 - 1.0 / c.kappa);
     c.hardsq = rh * rh;
@@ -584,15 +445,9 @@ template <class Law> void PairSpline<Law>::derive(int i, int j)
 
 template <class Law> void PairSpline<Law>::init_style()
 {
-  if (link_l > 0.0) {
+  if (links.on()) {
     neighbor->add_request(this, NeighConst::REQ_HISTORY);
-    if (!fix_history) {
-      fix_history = dynamic_cast<FixNeighHistory *>(modify->replace_fix(
-          std::string(LINK_FIX_ID) + "_DUMMY", std::string(LINK_FIX_ID) + " all NEIGH_HISTORY 1",
-          0));    // not NEIGH_HISTORY/omp: it ignores beyond_contact and keeps contacts only
-      fix_history->pair = this;
-    }
-    consolidate_link_total();
+    state.init();
   } else
     neighbor->add_request(this);
   kappa_any = 0;
@@ -662,16 +517,15 @@ template <class Law> void PairSpline<Law>::write_restart_settings(FILE *fp)
   fwrite(&offset_flag, sizeof(int), 1, fp);
   fwrite(&mix_flag, sizeof(int), 1, fp);
   fwrite(&chain_n, sizeof(int), 1, fp);
-  fwrite(&link_l, sizeof(double), 1, fp);
-  fwrite(&relink, sizeof(int), 1, fp);
-  fwrite(&links_made, sizeof(int), 1, fp);
-  const double total[3] = {link_total.broken, link_total.formed, link_total.ejump};
-  fwrite(total, sizeof(double), 3, fp);
+  fwrite(&links.l, sizeof(double), 1, fp);
+  fwrite(&links.relink, sizeof(int), 1, fp);
+  state.write_restart(fp);
 }
 
 template <class Law> void PairSpline<Law>::read_restart_settings(FILE *fp)
 {
-  double new_l = 0.0, total[3] = {0.0, 0.0, 0.0};
+  double new_l = 0.0;
+  int new_relink = 0;
   if (comm->me == 0) {
     utils::sfread(FLERR, &tail, sizeof(int), 1, fp, nullptr, error);
     utils::sfread(FLERR, &rc_global, sizeof(double), 1, fp, nullptr, error);
@@ -680,19 +534,12 @@ template <class Law> void PairSpline<Law>::read_restart_settings(FILE *fp)
     utils::sfread(FLERR, &mix_flag, sizeof(int), 1, fp, nullptr, error);
     utils::sfread(FLERR, &chain_n, sizeof(int), 1, fp, nullptr, error);
     utils::sfread(FLERR, &new_l, sizeof(double), 1, fp, nullptr, error);
-    utils::sfread(FLERR, &relink, sizeof(int), 1, fp, nullptr, error);
-    utils::sfread(FLERR, &links_made, sizeof(int), 1, fp, nullptr, error);
-    utils::sfread(FLERR, total, sizeof(double), 3, fp, nullptr, error);
+    utils::sfread(FLERR, &new_relink, sizeof(int), 1, fp, nullptr, error);
   }
   MPI_Bcast(&new_l, 1, MPI_DOUBLE, 0, world);
-  MPI_Bcast(&relink, 1, MPI_INT, 0, world);
-  MPI_Bcast(&links_made, 1, MPI_INT, 0, world);
-  link_settings_changed(new_l);
-  if (comm->me == 0) {    // the totals stay on processor 0 (consolidate_link_total)
-    link_total.broken = total[0];
-    link_total.formed = total[1];
-    link_total.ejump = total[2];
-  }
+  MPI_Bcast(&new_relink, 1, MPI_INT, 0, world);
+  set_links(new_l, new_relink);
+  state.read_restart(fp);
   MPI_Bcast(&tail, 1, MPI_INT, 0, world);
   MPI_Bcast(&chain_n, 1, MPI_INT, 0, world);
   set_chain_scale();
@@ -735,42 +582,15 @@ template <class Law> void PairSpline<Law>::write_data_all(FILE *fp)
 ------------------------------------------------------------------------- */
 
 template <class Law>
-void PairSpline<Law>::law_derivs(int itype, int jtype, double r, double *d, bool with_tail) const
+void PairSpline<Law>::law_derivs(int itype, int jtype, double r, double *d, bool tailed) const
 {
   const SplineCoeff &c = pair_coeff(itype, jtype);
-  if (with_tail && r >= c.rc) {
+  if (!tailed) return kappa_derivs<Law>(c, r, d);
+  if (r >= c.rc) {
     d[0] = d[1] = d[2] = d[3] = 0.0;
     return;
   }
-  if (with_tail && tail == WAGNER && r * r >= c.bsq) {
-    const double w = c.acsq - r * r;
-    const double g = w * (3.0 * c.wa3 * w - 2.0 * c.wa2);    // dPi/dw
-    const double g1 = 6.0 * c.wa3 * w - 2.0 * c.wa2;           // d2Pi/dw2
-    d[0] = w * w * (c.wa3 * w - c.wa2);
-    d[1] = -2.0 * r * g;
-    d[2] = -2.0 * g + 4.0 * r * r * g1;
-    d[3] = 12.0 * r * g1 - 48.0 * c.wa3 * r * r * r;
-    return;
-  }
-  double base[4];
-  Law::derivs(c, c.kappa * (r - c.a) + c.a, base);
-  const double k = c.kappa;
-  d[0] = base[0];
-  d[1] = k * base[1];
-  d[2] = k * k * base[2];
-  d[3] = k * k * k * base[3];
-  if (!with_tail) return;
-  if (tail == LAGUNOV && r >= c.rs) {
-    const double l = c.inv_l2;
-    const double x = r - c.rs;
-    const double m = 1.0 - x * x * l;
-    const double k0 = m * m, k1 = -4.0 * x * m * l, k2 = -4.0 * l * (m - 2.0 * x * x * l);
-    const double k3 = 24.0 * x * l * l;
-    d[3] = d[3] * k0 + 3.0 * d[2] * k1 + 3.0 * d[1] * k2 + d[0] * k3;
-    d[2] = d[2] * k0 + 2.0 * d[1] * k1 + d[0] * k2;
-    d[1] = d[1] * k0 + d[0] * k1;
-    d[0] *= k0;
-  }
+  with_tail(tail, [&](auto t) { decltype(t)::template derivs<Law>(c, r, d); });
   d[0] -= c.offset;
 }
 
@@ -802,12 +622,9 @@ double PairSpline<Law>::single(int, int, int itype, int jtype, double rsq, doubl
 {
   const SplineCoeff &c = pair_coeff(itype, jtype);
   double fpair = 0.0, e = 0.0;
-  if (rsq < c.cutsq) {
-    if (tail == CUT) e = tail_eval<CUT, true, Law>(c, rsq, fpair);
-    else if (tail == WAGNER) e = tail_eval<WAGNER, true, Law>(c, rsq, fpair);
-    else e = tail_eval<LAGUNOV, true, Law>(c, rsq, fpair);
-    e -= c.offset;
-  }
+  if (rsq < c.cutsq)
+    e = with_tail(tail, [&](auto t) { return decltype(t)::template eval<true, Law>(c, rsq, fpair); })
+        - c.offset;
   fforce = factor_lj * fpair;
   return factor_lj * e;
 }
@@ -827,7 +644,7 @@ void PairSpline<Law>::born_matrix(int, int, int itype, int jtype, double rsq, do
 template <class Law> void *PairSpline<Law>::extract(const char *str, int &dim)
 {
   dim = 0;
-  if (strcmp(str, "link_history") == 0) return (void *) fix_history;    // compute links/atom, dust
+  if (strcmp(str, "pair_state") == 0) return links.on() ? (void *) &state : nullptr;
   dim = 2;
   if (strcmp(str, "D") == 0) return (void *) d0;
   if (strcmp(str, "a") == 0) return (void *) a0;

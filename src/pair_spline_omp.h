@@ -19,9 +19,6 @@ namespace ClusterDyn {
     void compute(int, int) override;
     double memory_usage() override;
 
-   private:
-    template <int TAIL, int MODE, int EVFLAG, int EFLAG, int NEWTON_PAIR>
-    void eval(int ifrom, int ito, ThrData *const thr, LinkTally &links);
   };
 
 }    // namespace ClusterDyn

@@ -38,8 +38,6 @@ namespace ClusterDyn {
     double rc;                      // end of the interaction (absolute)
     double offset;                  // energy shift (cut tail with pair_modify shift yes)
     double hardsq;                  // r^2 at or below which the law is singular
-    double linksq, asq, ea;         // link: (L a)^2, a^2, the law's energy at a
-    double ebreak;                  // link: the energy a link holds as it breaks at Rc a
   };
 
   // positive numeric argument, with an error naming it

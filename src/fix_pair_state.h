@@ -1,0 +1,78 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   Cluster-dynamics plugin for LAMMPS: fix PAIR_STATE, the storage of the
+   persistent pair state (class PairState, pair_state.h).  Internal, as fix
+   NEIGH_HISTORY is: the pair state creates it at the first init.
+
+   It is fix neigh/history (a flag and dnum values per neighbour pair, kept
+   across list builds by atom IDs) made safe for everything LAMMPS does to
+   atoms between and inside runs:
+   - the neighbour data are saved to the atoms only while they describe the
+     current atoms (from a list build or a run's setup to the end of the
+     run): write_restart after a run no longer saves from a list whose ghost
+     indices are stale;
+   - the end of every setup saves (rerun: each frame, which has no list
+     build inside a run);
+   - each atom carries the ID it had when its partners were saved: after
+     reset_atoms id or delete_atoms compress yes the partners are relabelled
+     to the new IDs; an atom created since (saved ID 0) is "fresh": its
+     pairs are made at the next setup;
+   - after each list build the saved links are counted against the list: a
+     link whose partner no longer exists ended with its atom (logged), a
+     link missing from the list while both atoms exist is an error;
+   - in a minimization the owner settles tentative changes before a save.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_CLUSTERDYN_FIX_PAIR_STATE_H
+#define LMP_CLUSTERDYN_FIX_PAIR_STATE_H
+
+#include "fix_neigh_history.h"
+
+#include <string>
+
+namespace LAMMPS_NS {
+namespace ClusterDyn {
+
+  class PairState;
+
+  class FixPairState : public FixNeighHistory {
+   public:
+    FixPairState(class LAMMPS *, int, char **);
+    ~FixPairState() override;
+    int setmask() override;
+    void setup(int) override;
+    void min_setup(int) override;
+    void pre_exchange() override;
+    void min_pre_exchange() override;
+    void post_neighbor() override;
+    void post_run() override;
+    void write_restart(FILE *) override;
+
+    void grow_arrays(int) override;
+    void copy_arrays(int, int, int) override;
+    void set_arrays(int) override;
+    int pack_exchange(int, double *) override;
+    int unpack_exchange(int, double *) override;
+    int pack_restart(int, double *) override;
+    void unpack_restart(int, int) override;
+    int size_restart(int) override;
+    int maxsize_restart() override;
+    int pack_forward_comm(int, int *, double *, int, int *) override;
+    void unpack_forward_comm(int, int, double *) override;
+    double memory_usage() override;
+
+    PairState *owner;           // settles tentative changes; names the style in errors
+    const tagint *forward_saved_ids();    // saved IDs of my atoms and ghosts (0 = fresh)
+    bigint count_saved_links();           // links in the atoms' partner arrays, all processors
+
+   private:
+    tagint *saved_id;           // per atom: its ID when its partners were saved; 0 = fresh
+    int nds_current;            // the neighbour data describe the current atoms
+    void save();
+    void relabel_partners();    // IDs changed since the save: partners follow
+    void check_lost_links();
+  };
+
+}    // namespace ClusterDyn
+}    // namespace LAMMPS_NS
+
+#endif

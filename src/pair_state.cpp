@@ -1,0 +1,204 @@
+/* ----------------------------------------------------------------------
+   Cluster-dynamics plugin for LAMMPS: persistent pair state (pair_state.h).
+------------------------------------------------------------------------- */
+
+#include "pair_state.h"
+
+#include "fix_pair_state.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "error.h"
+#include "modify.h"
+#include "neigh_list.h"
+#include "output.h"
+#include "pair.h"
+#include "update.h"
+
+#include <algorithm>
+
+using namespace LAMMPS_NS;
+using namespace ClusterDyn;
+
+// the internal fix style is known to LAMMPS only while a pair state creates its fix: it is
+// not a style of the plugin's list, and users cannot define it
+static Fix *create_fix_pair_state(LAMMPS *lmp, int narg, char **arg)
+{
+  return new FixPairState(lmp, narg, arg);
+}
+
+PairState::PairState(LAMMPS *lmp, Pair *owner_pair, const std::string &who, int nv) :
+    Pointers(lmp), pair(owner_pair), name(who), nvalues(nv), enabled(0), made_flag(0),
+    fix(nullptr), pending_step(-1), trial_now(0)
+{
+}
+
+PairState::~PairState()
+{
+  if (!enabled) return;
+  for (const std::string &id : {std::string(FIX_ID), placeholder()})
+    if (modify->get_fix_by_id(id) && (id != FIX_ID || modify->get_fix_by_id(id) == fix))
+      modify->delete_fix(id);
+}
+
+std::string PairState::placeholder() const
+{
+  return std::string(FIX_ID) + "_DUMMY";
+}
+
+void PairState::add_placeholder()
+{
+  modify->add_fix(placeholder() + " all DUMMY");
+}
+
+/* ----------------------------------------------------------------------
+   pair_style with state: the first time a placeholder; re-issued, the
+   state starts afresh (its pairs are made again at the next setup)
+------------------------------------------------------------------------- */
+
+void PairState::enable()
+{
+  if (!enabled) {
+    if (modify->get_fix_by_id(FIX_ID) || modify->get_fix_by_id(placeholder()))
+      error->all(FLERR, "{}: another pair style already keeps links (fix {}); one linked pair "
+                 "style at a time", name, FIX_ID);
+    if (!atom->tag_enable) error->all(FLERR, "{}: link needs atom IDs", name);
+    add_placeholder();
+    enabled = 1;
+    return;
+  }
+  bigint discarded = 0;
+  if (fix && modify->get_fix_by_id(FIX_ID) == fix) {
+    discarded = fix->count_saved_links();
+    modify->delete_fix(FIX_ID);
+  }
+  fix = nullptr;
+  if (!modify->get_fix_by_id(placeholder())) add_placeholder();
+  if (made_flag && comm->me == 0)
+    utils::logmesg(lmp, "{}: pair_style re-issued: the {} links of the last run are discarded; "
+                   "the pairs are linked afresh at the next setup\n", name, discarded);
+  made_flag = 0;
+  total = pending = StateTally();
+}
+
+void PairState::init()
+{
+  if (!fix) {
+    if (!modify->get_fix_by_id(placeholder()))
+      error->all(FLERR, "{}: its link state (fix {}) was deleted: re-issue pair_style to link "
+                 "afresh", name, placeholder());
+    (*modify->fix_map)["PAIR_STATE"] = &create_fix_pair_state;
+    fix = dynamic_cast<FixPairState *>(modify->replace_fix(
+        placeholder(), fmt::format("{} all PAIR_STATE {}", FIX_ID, std::max(nvalues, 1)), 0));
+    modify->fix_map->erase("PAIR_STATE");
+    fix->pair = pair;
+    fix->owner = this;
+  }
+  check_fix();
+  consolidate();
+}
+
+void PairState::check_fix() const
+{
+  if (!fix || modify->get_fix_by_id(FIX_ID) != fix)
+    error->all(FLERR, "{}: its link state (fix {}) was deleted by unfix: re-issue pair_style "
+               "to link afresh", name, FIX_ID);
+}
+
+/* ---------------------------------------------------------------------- */
+
+StatePass PairState::begin()
+{
+  trial_now = update->whichflag == 2 && !update->setupflag;
+  if (trial_now && pending_step != update->ntimestep) accept();    // a new minimizer step
+  pending_step = update->ntimestep;
+  StatePass pass;
+  pass.words = fix->firstflag;
+  pass.values = fix->firstvalue;
+  pass.fresh = update->setupflag ? fix->forward_saved_ids() : nullptr;
+  pass.trial = trial_now;
+  return pass;
+}
+
+void PairState::end(const StateTally &pass, double *tally_out)
+{
+  if (trial_now) pending = pass;
+  else total.add(pass);
+  if (update->setupflag) made_flag = 1;
+  // a restart file written at the end of this step carries the global totals
+  if (output->restart_flag && output->next_restart == update->ntimestep) consolidate();
+  tally_out[0] = total.broken + pending.broken;
+  tally_out[1] = total.formed + pending.formed;
+  tally_out[2] = total.ejump + pending.ejump;
+}
+
+void PairState::accept()
+{
+  if (!pending.any()) return;
+  settle_words(true);
+  total.add(pending);
+  pending = StateTally();
+}
+
+void PairState::settle_before_save()
+{
+  if (update->whichflag == 2 && pending_step != update->ntimestep) accept();
+  else if (pending.any()) {    // a line search's trial: it never happened
+    settle_words(false);
+    pending = StateTally();
+  }
+}
+
+void PairState::settle_words(bool accept_trial)
+{
+  const NeighList *list = pair->list;
+  int *const *words = fix->firstflag;
+  for (int ii = 0; ii < list->inum; ii++) {
+    const int i = list->ilist[ii];
+    for (int jj = 0; jj < list->numneigh[i]; jj++)
+      words[i][jj] = accept_trial ? state_now(words[i][jj]) : words[i][jj] & 1;
+  }
+}
+
+StateView PairState::view() const
+{
+  check_fix();
+  return StateView{pair->list, fix->firstflag, fix->firstvalue, nvalues};
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairState::consolidate()
+{
+  double mine[3] = {total.broken, total.formed, total.ejump}, all[3];
+  MPI_Allreduce(mine, all, 3, MPI_DOUBLE, MPI_SUM, world);
+  total = StateTally();
+  if (comm->me == 0) {
+    total.broken = all[0];
+    total.formed = all[1];
+    total.ejump = all[2];
+  }
+}
+
+void PairState::write_restart(FILE *fp)
+{
+  fwrite(&made_flag, sizeof(int), 1, fp);
+  const double sums[3] = {total.broken, total.formed, total.ejump};
+  fwrite(sums, sizeof(double), 3, fp);
+}
+
+void PairState::read_restart(FILE *fp)
+{
+  double sums[3] = {0.0, 0.0, 0.0};
+  if (comm->me == 0) {
+    utils::sfread(FLERR, &made_flag, sizeof(int), 1, fp, nullptr, error);
+    utils::sfread(FLERR, sums, sizeof(double), 3, fp, nullptr, error);
+  }
+  MPI_Bcast(&made_flag, 1, MPI_INT, 0, world);
+  total = StateTally();
+  if (comm->me == 0) {    // the totals stay on processor 0 (consolidate)
+    total.broken = sums[0];
+    total.formed = sums[1];
+    total.ejump = sums[2];
+  }
+}

@@ -1,0 +1,125 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   Cluster-dynamics plugin for LAMMPS: persistent pair state, the component
+   a pair style composes to keep a state per neighbour pair (a flag, e.g.
+   linked, and a fixed number of doubles) across list builds, restarts,
+   atom migration, deletion and renumbering, minimization and rerun.
+
+   It owns the lifecycle of its storage, fix PAIR_STATE (fix_pair_state.h):
+   a placeholder fix at pair_style (as the granular styles do), replaced at
+   the first init; the pairs of "fresh" atoms (all atoms after pair_style,
+   atoms created since) are made at the next setup; the tally of changes
+   (breaks, welds, energy jumps) with its restart; and the one accessor the
+   computes use (view()).
+
+   A pair style calls begin() at the start of compute() and end() after
+   it; its kernel writes each pair's state word through state_word():
+   outside a minimization the word is the state; inside one, a trial point
+   (a line-search evaluation) only marks its change (bit 1) and the change
+   counts when the minimizer accepts the step (the next iteration, a save
+   or the end of the run) - trial points never break or make pairs.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_CLUSTERDYN_PAIR_STATE_H
+#define LMP_CLUSTERDYN_PAIR_STATE_H
+
+#include "lmptype.h"
+#include "pointers.h"
+
+#include <cstdio>
+#include <string>
+
+namespace LAMMPS_NS {
+class NeighList;
+class Pair;
+namespace ClusterDyn {
+
+  class FixPairState;
+
+  // the changes of the pair states (a pair with a ghost counts 1/2 with newton off, as
+  // both processors see it)
+  struct StateTally {
+    double broken = 0.0;    // pairs whose state went from 1 to 0
+    double formed = 0.0;    // pairs whose state went from 0 to 1 during a run
+    double ejump = 0.0;     // the sum of the pair-energy jumps of those changes
+    void add(const StateTally &o)
+    {
+      broken += o.broken;
+      formed += o.formed;
+      ejump += o.ejump;
+    }
+    bool any() const { return broken != 0.0 || formed != 0.0; }
+  };
+
+  // how a pair's state may change in this evaluation: kept (only breaking), made at a setup
+  // (a pair of a fresh atom: no tally), remade during a run (tallied)
+  enum Making { MAKE_NONE = 0, MAKE_INITIAL = 1, MAKE_AGAIN = 2 };
+
+  // a pair's state word: bit 0 = the state last accepted, bit 1 = a trial changed it
+  inline int state_now(int word)
+  {
+    return (word ^ (word >> 1)) & 1;
+  }
+  inline int state_word(int word, int now, int trial)
+  {
+    return trial ? (word & 1) | ((now ^ (word & 1)) << 1) : now;
+  }
+
+  // what one force evaluation reads and writes
+  struct StatePass {
+    int *const *words;          // per neighbour pair of the pair style's list
+    double *const *values;      // nvalues doubles per neighbour pair
+    const tagint *fresh;        // at a setup: per atom (own and ghost), 0 = fresh; else null
+    int trial;                  // a minimizer's trial point: see state_word()
+  };
+
+  // what the computes read: the state of pair jj of atom i is state_now(words[i][jj])
+  struct StateView {
+    const NeighList *list;
+    int *const *words;          // null on a processor that has had no atoms
+    double *const *values;
+    int nvalues;
+  };
+
+  class PairState : protected Pointers {
+   public:
+    PairState(LAMMPS *, Pair *, const std::string &who, int nvalues);
+    ~PairState();
+
+    static constexpr const char *FIX_ID = "NEIGH_HISTORY_LINK";
+    void enable();             // pair_style: a placeholder fix; again: the state starts afresh
+    bool on() const { return enabled; }
+    void init();               // init_style(): the fix replaces its placeholder
+    StatePass begin();         // start of compute()
+    void end(const StateTally &pass, double *tally_out);    // tally_out: 3 values (pvector)
+    bool made() const { return made_flag; }
+    StateView view() const;
+    const char *who() const { return name.c_str(); }
+    void write_restart(FILE *);
+    void read_restart(FILE *);
+
+    // called by the fix: a minimizer's step is accepted, or (before a save) settled
+    void accept();
+    void settle_before_save();
+
+   private:
+    Pair *pair;
+    std::string name;          // the pair style, for messages
+    int nvalues;
+    int enabled, made_flag;
+    FixPairState *fix;         // null until the first init
+    StateTally total;          // this processor's share since the state was made
+    StateTally pending;        // a minimizer's last evaluation, not yet accepted
+    bigint pending_step;
+    int trial_now;
+
+    std::string placeholder() const;
+    void add_placeholder();
+    void check_fix() const;
+    void settle_words(bool accept_trial);    // words = state_now (accept) or bit 0 (drop)
+    void consolidate();        // every processor's share onto processor 0
+  };
+
+}    // namespace ClusterDyn
+}    // namespace LAMMPS_NS
+
+#endif

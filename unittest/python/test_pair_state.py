@@ -1,0 +1,311 @@
+"""Persistent pair state (links) under everything LAMMPS does to atoms, on 1 and 2 ranks: a
+restart written right after a run, atom deletion and ID renumbering, minimization trial points,
+rerun, empty processors, unfix of the internal fix, a re-issued pair_style, a linked pair that
+leaves the neighbour list, and compute dust evaluated again at the same step.  Oracles: the
+straight run against the split one, compute coord/atom at L a (the pairs a fresh setup links),
+the Morse minimum, the original run's link counts frame by frame, the serial run."""
+import re
+
+import numpy as np
+import pytest
+from conftest import PLUGIN, run_lmp, session
+
+BLOCK = """plugin load {plugin}
+units lj
+{map}
+lattice fcc 1.41421356
+region box block 0 4 0 4 0 4
+create_box 1 box
+create_atoms 1 box
+mass 1 1.0
+pair_style morse/spline cut 1.2 link 1.05
+pair_coeff * * 1.0 6.0 1.0
+neighbor 0.2 bin
+compute p all pair morse/spline
+compute l all links/atom
+compute ls all reduce sum c_l
+compute c all coord/atom cutoff 1.05
+variable diff atom abs(c_l-c_c)
+compute diff all reduce sum v_diff
+thermo_style custom step pe c_ls c_p[1] c_diff
+thermo_modify norm no format float %.15g
+"""
+
+
+def results(out):
+    """The 'RESULT name value' lines a script printed, as floats."""
+    return {m.group(1): float(m.group(2)) for m in re.finditer(r"^RESULT (\S+) (\S+)$", out, re.M)}
+
+
+def block(**kw):
+    return BLOCK.format(plugin=PLUGIN, map=kw.get("map", "atom_modify map array"))
+
+
+REPORT = 'print "RESULT {tag}pe $(pe:%.15g)"\nprint "RESULT {tag}links $(c_ls)"\n' \
+         'print "RESULT {tag}broken $(c_p[1])"\nprint "RESULT {tag}diff $(c_diff)"\n'
+
+
+def report(tag):
+    return REPORT.format(tag=tag)
+
+
+@pytest.mark.parametrize("nprocs", [1, 2])
+def test_write_restart_right_after_a_run_keeps_links_and_a_split_run_equals_the_straight_one(
+        tmp_path, nprocs):
+    hot = "velocity all create 0.5 4711 loop geom\nfix 1 all nve\ntimestep 0.004\n"
+    straight = block() + hot + "run 300\nrun 300\n" + report("s")
+    split_a = block() + hot + "run 300\n" + report("a") + "write_restart split.restart\nrun 0\n" + \
+        report("b")
+    split_b = f"plugin load {PLUGIN}\nread_restart split.restart\nneighbor 0.2 bin\nfix 1 all nve\n" \
+        + BLOCK.split("neighbor 0.2 bin\n")[1] + "run 0\n" + report("c") + "run 300\n" + report("d")
+    s = results(run_lmp(tmp_path, straight, nprocs))
+    r = results(run_lmp(tmp_path, split_a, nprocs))
+    r.update(results(run_lmp(tmp_path, split_b, nprocs, name="in.b")))
+    assert 0 < r["abroken"] and r["alinks"] < 12 * 256    # links broke, atoms crossed the box
+    for tag in "bc":    # write_restart and read_restart change nothing
+        assert r[tag + "links"] == r["alinks"] and r[tag + "broken"] == r["abroken"]
+        assert r[tag + "pe"] == pytest.approx(r["ape"], rel=1e-13)
+    assert r["dlinks"] == s["slinks"] and r["dbroken"] == s["sbroken"]
+    assert r["dpe"] == pytest.approx(s["spe"], rel=1e-9)
+
+
+@pytest.mark.parametrize("nprocs", [1, 2])
+@pytest.mark.parametrize("atom_map", ["atom_modify map array", ""])
+def test_links_follow_renumbered_ids_and_end_with_deleted_atoms(tmp_path, nprocs, atom_map):
+    script = block(map=atom_map) + """displace_atoms all random 0.02 0.02 0.02 991 units box
+run 0
+""" + report("a") + """reset_atoms id sort yes
+run 0
+""" + report("b") + """region hole sphere 2 2 2 0.8
+delete_atoms region hole compress yes
+run 0
+""" + report("c") + 'print "RESULT natoms $(atoms)"\n'
+    out = run_lmp(tmp_path, script, nprocs)
+    r = results(out)
+    assert r["alinks"] == 12 * 256 and r["adiff"] == 0    # links are the pairs within L a
+    assert r["blinks"] == r["alinks"] and r["bdiff"] == 0 and r["bpe"] == pytest.approx(r["ape"])
+    # the remaining atoms keep exactly their links to remaining atoms (coord/atom at L a)
+    assert r["natoms"] < 256 and r["cdiff"] == 0 and 0 < r["clinks"] < r["blinks"]
+    assert r["cbroken"] == 0 and "links ended with their deleted atoms" in out
+
+
+@pytest.mark.parametrize("nprocs", [1, 2])
+@pytest.mark.parametrize("style", ["cg", "sd", "fire"])
+def test_minimize_trial_points_never_break_links(tmp_path, nprocs, style):
+    # a compressed linked dimer: the first line-search step (dmax) takes it to 1.4 a, beyond
+    # Rc a (the list is rebuilt there): a trial point, which must not break the link.  A
+    # minimizer never ends above its start; fire (no line search) reaches the Morse minimum.
+    script = f"""plugin load {PLUGIN}
+units lj
+atom_modify map array
+region box block -4 4 -4 4 -4 4
+create_box 1 box
+mass 1 1.0
+create_atoms 1 single -0.5 0 0 units box
+create_atoms 1 single 0.5 0 0 units box
+pair_style morse/spline cut 1.3 link 1.05
+pair_coeff * * 1.0 6.0 1.0
+neighbor 0.3 bin
+compute p all pair morse/spline
+compute l all links/atom
+compute ls all reduce sum c_l
+thermo_modify norm no
+run 0
+set atom 1 x -0.4
+set atom 2 x 0.4
+run 0
+print "RESULT pe_start $(pe:%.15g)"
+min_style {style}
+min_modify dmax 0.3
+minimize 0 1e-10 2000 20000
+print "RESULT pe $(pe:%.15g)"
+print "RESULT r $(x[2]-x[1]:%.15g)"
+print "RESULT broken $(c_p[1])"
+print "RESULT links $(c_ls)"
+run 0
+print "RESULT pe0 $(pe:%.15g)"
+"""
+    r = results(run_lmp(tmp_path, script, nprocs))
+    assert r["broken"] == 0 and r["links"] == 2 and r["pe0"] == r["pe"]
+    assert r["pe"] <= r["pe_start"] and r["r"] < 1.3
+    if style == "fire":
+        assert r["pe"] == pytest.approx(-1.0, abs=1e-8) and r["r"] == pytest.approx(1.0, abs=1e-4)
+
+
+def test_minimize_of_a_hot_block_breaks_only_links_beyond_rc_at_accepted_points(tmp_path):
+    # cg on a block with broken and nearly broken links: after the minimization a run 0 at the
+    # same positions finds the same energy and links (no phantom breaks at trial points)
+    script = block() + """velocity all create 3.0 4928 loop geom
+fix 1 all nve
+timestep 0.002
+run 300
+unfix 1
+run 0
+""" + report("s") + "minimize 0 1e-8 200 2000\n" + report("m") + "run 0\n" + report("z")
+    r = results(run_lmp(tmp_path, script))
+    assert r["sbroken"] > 0    # the hot run broke links; the minimizer must never end higher
+    assert r["mpe"] <= r["spe"]
+    assert r["zlinks"] == r["mlinks"] and r["zbroken"] == r["mbroken"] and r["zpe"] == r["mpe"]
+
+
+@pytest.mark.parametrize("nprocs", [1, 2])
+def test_rerun_tracks_links_frame_by_frame(tmp_path, nprocs):
+    run = block() + """velocity all create 3.0 4928 loop geom
+fix 1 all nve
+timestep 0.002
+thermo 1
+dump d all custom 1 frames.dump id x y z
+dump_modify d format float %.17g sort id
+run 60
+"""
+    rerun = block() + "thermo 1\nrerun frames.dump dump x y z\n"
+    def rows(out):
+        return np.array([[float(v) for v in l.split()] for l in out.splitlines()
+                         if re.match(r"^\s*\d+(\s+\S+){4}\s*$", l)])
+    a = rows(run_lmp(tmp_path, run, nprocs))
+    b = rows(run_lmp(tmp_path, rerun, nprocs, name="in.rerun"))
+    assert len(a) == len(b) == 61 and a[-1, 3] > 50    # links broke during the run
+    assert np.array_equal(a[:, [0, 2, 3]], b[:, [0, 2, 3]])    # links and breaks, every frame
+    assert np.allclose(a[:, 1], b[:, 1], rtol=1e-10)
+
+
+@pytest.mark.parametrize("nprocs", [1, 2])
+def test_dust_links_with_an_empty_processor_and_an_empty_box(tmp_path, nprocs):
+    script = f"""plugin load {PLUGIN}
+units lj
+processors * 1 1
+lattice fcc 1.41421356
+region box block 0 8 0 3 0 3
+create_box 1 box
+region left block 0 3 0 3 0 3
+create_atoms 1 region left
+mass 1 1.0
+pair_style morse/spline cut 1.2 link 1.05
+pair_coeff * * 1.0 6.0 1.0
+neighbor 0.2 bin
+compute d all dust links
+compute l all links/atom
+compute ls all reduce sum c_l
+run 0
+print "RESULT fragments $(c_d[6])"
+print "RESULT largest $(c_d[5])"
+print "RESULT links $(c_ls)"
+print "RESULT natoms $(atoms)"
+"""
+    r = results(run_lmp(tmp_path, script, nprocs))
+    assert r["fragments"] == 1 and r["largest"] == r["natoms"] > 0 and r["links"] > 0
+    empty = f"""plugin load {PLUGIN}
+units lj
+region box block 0 4 0 4 0 4
+create_box 1 box
+mass 1 1.0
+pair_style morse/spline cut 1.2 link 1.05
+pair_coeff * * 1.0 6.0 1.0
+compute d all dust links
+run 0
+print "RESULT fragments $(c_d[6])"
+"""
+    assert results(run_lmp(tmp_path, empty, nprocs, name="in.empty"))["fragments"] == 0
+
+
+def dimer_session(lmp, style="morse/spline cut 1.3 link 1.05", r=1.0):
+    lmp.commands_list(["units lj", "region box block -4 4 -4 4 -4 4", "create_box 1 box",
+                       "mass 1 1.0", "create_atoms 1 single 0 0 0 units box",
+                       f"create_atoms 1 single {r} 0 0 units box", f"pair_style {style}",
+                       "pair_coeff * * 1.0 6.0 1.0", "neighbor 0.3 bin",
+                       "compute l all links/atom", "compute ls all reduce sum c_l"])
+
+
+def test_unfix_of_the_internal_fix_is_a_clear_error_and_the_host_survives():
+    with session() as lmp:
+        dimer_session(lmp)
+        lmp.command("run 0")
+        lmp.command("unfix NEIGH_HISTORY_LINK")
+        with pytest.raises(Exception, match="link state \\(fix NEIGH_HISTORY_LINK\\) was deleted"):
+            lmp.command("run 0")
+        lmp.commands_list(["pair_style morse/spline cut 1.3 link 1.05", "run 0"])    # afresh
+        assert lmp.extract_compute("ls", 0, 0) == 2
+
+
+def test_fix_pair_state_is_internal():
+    with session() as lmp:
+        lmp.commands_list(["units lj", "region box block -4 4 -4 4 -4 4", "create_box 1 box",
+                           "mass 1 1.0", "pair_style morse/spline cut 1.3",
+                           "pair_coeff * * 1.0 6.0 1.0"])
+        with pytest.raises(Exception, match="Unrecognized fix style 'PAIR_STATE'"):
+            lmp.command("fix s all PAIR_STATE 1")
+    with session() as lmp:
+        dimer_session(lmp)    # after a linked style has made its fix: still not for users
+        lmp.command("run 0")
+        with pytest.raises(Exception, match="Unrecognized fix style 'PAIR_STATE'"):
+            lmp.command("fix s all PAIR_STATE 1")
+
+
+@pytest.mark.parametrize("nprocs", [1, 2])
+def test_reissued_pair_style_links_afresh_with_the_new_l_and_says_so(tmp_path, nprocs):
+    script = block() + """displace_atoms all random 0.04 0.04 0.04 991 units box
+run 0
+""" + report("a") + """pair_style morse/spline cut 1.2 link 1.02
+pair_coeff * * 1.0 6.0 1.0
+compute c2 all coord/atom cutoff 1.02
+variable diff2 atom abs(c_l-c_c2)
+compute diff2 all reduce sum v_diff2
+run 0
+print "RESULT bdiff2 $(c_diff2)"
+""" + report("b") + """pair_style hybrid/overlay morse/spline cut 1.2 link 1.05 zero 1.0
+pair_coeff * * morse/spline 1.0 6.0 1.0
+pair_coeff * * zero
+compute p2 all pair morse/spline
+run 0
+print "RESULT cbroken $(c_p2[1])"
+""" + report("c")
+    out = run_lmp(tmp_path, script, nprocs)
+    r = results(out)
+    assert r["adiff"] == 0 and r["bdiff2"] == 0 and r["blinks"] < r["alinks"]    # L = 1.02 now
+    assert r["cdiff"] == 0 and r["clinks"] == r["alinks"] and r["cbroken"] == 0
+    assert f"pair_style re-issued: the {r['alinks'] / 2:.0f} links of the last run are discarded" \
+        in out
+
+
+def test_a_linked_pair_leaving_the_neighbour_list_is_an_error():
+    with session() as lmp:
+        lmp.command("atom_modify map array")
+        dimer_session(lmp)
+        lmp.command("run 0")
+        assert lmp.extract_compute("ls", 0, 0) == 2
+        lmp.command("neigh_modify exclude type 1 1")
+        with pytest.raises(Exception, match="1 links left the neighbour list unbroken "
+                                            "\\(fix NEIGH_HISTORY_LINK\\)"):
+            lmp.command("run 0")
+
+
+def test_deleting_a_linked_atom_is_no_error():
+    with session() as lmp:
+        dimer_session(lmp)
+        lmp.command("run 0")
+        lmp.command("group two id 2")
+        lmp.command("delete_atoms group two compress no")
+        lmp.command("run 0")
+        assert lmp.get_natoms() == 1 and lmp.extract_compute("ls", 0, 0) == 0
+
+
+@pytest.mark.parametrize("change", ["displace_atoms right move 3 0 0 units box",
+                                    "delete_atoms group right"])
+def test_compute_dust_is_evaluated_again_after_the_atoms_changed(change):
+    with session() as lmp:
+        lmp.commands_list(["units lj", "boundary f p p", "lattice fcc 1.41421356",
+                           "region box block -1 9 0 4 0 4", "create_box 1 box",
+                           "region b block 0 4 0 4 0 4", "create_atoms 1 region b", "mass 1 1.0",
+                           "region right block 2 4 INF INF INF INF", "group right region right",
+                           "pair_style morse/spline cut 1.2", "pair_coeff * * 1.0 6.0 1.0",
+                           "neighbor 0.2 bin", "compute d all dust",
+                           "thermo_style custom step c_d[5] c_d[6]", "run 0"])
+        natoms = lmp.get_natoms()
+        largest, fragments = lmp.extract_compute("d", 0, 1)[4], lmp.extract_compute("d", 0, 1)[5]
+        assert largest == natoms and fragments == 1
+        lmp.commands_list([change, "run 0"])
+        largest, fragments = lmp.extract_compute("d", 0, 1)[4], lmp.extract_compute("d", 0, 1)[5]
+        if change.startswith("delete"):
+            assert largest == lmp.get_natoms() < natoms and fragments == 1
+        else:
+            assert fragments == 2 and largest < natoms
