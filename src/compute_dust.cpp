@@ -24,7 +24,7 @@
 
 #include "compute_dust.h"
 
-#include "allgatherv.h"
+#include "mpi_collectives.h"
 #include "skin_check.h"
 
 #include "atom.h"
@@ -53,32 +53,6 @@ enum { FRAGMENT_ID = 0, FRAGMENT_SIZE = 1, DUST_FLAG = 2 };         // per-atom 
 enum { SIZE = 0, MASS = 1, MX = 2, MV = 5 };                         // ComputeDust::Sums
 static constexpr int RECORD = 1 + ComputeDust::NSUMS;                // fragment ID, sums
 static constexpr int NCOLS = 10;                                     // local columns
-
-// each processor's boxes[p] delivered to processor p; returns what I received, concatenated in
-// rank order, and sets recvcounts (how much came from each processor)
-static std::vector<double> alltoallv(const std::vector<std::vector<double>> &boxes,
-                                     std::vector<int> &recvcounts, MPI_Comm world)
-{
-  const int nprocs = boxes.size();
-  recvcounts.assign(nprocs, 0);
-  std::vector<int> sendcounts(nprocs), sdispls(nprocs), rdispls(nprocs);
-  std::vector<double> sendbuf;
-  for (int p = 0; p < nprocs; p++) {
-    sdispls[p] = sendbuf.size();
-    sendcounts[p] = boxes[p].size();
-    sendbuf.insert(sendbuf.end(), boxes[p].begin(), boxes[p].end());
-  }
-  MPI_Alltoall(sendcounts.data(), 1, MPI_INT, recvcounts.data(), 1, MPI_INT, world);
-  int total = 0;
-  for (int p = 0; p < nprocs; p++) {
-    rdispls[p] = total;
-    total += recvcounts[p];
-  }
-  std::vector<double> recvbuf(total);
-  MPI_Alltoallv(sendbuf.data(), sendcounts.data(), sdispls.data(), MPI_DOUBLE, recvbuf.data(),
-                recvcounts.data(), rdispls.data(), MPI_DOUBLE, world);
-  return recvbuf;
-}
 
 ComputeDust::ComputeDust(LAMMPS *lmp, int narg, char **arg) :
     Compute(lmp, narg, arg), cutoff_user(0.0), maxsize(0), links(0), dust_rows(0),

@@ -4,7 +4,7 @@
 
 #include "fix_pair_state.h"
 
-#include "allgatherv.h"
+#include "mpi_collectives.h"
 #include "pair_state.h"
 
 #include "atom.h"

@@ -5,8 +5,6 @@
 
 #include "pair_spline_omp.h"
 
-#include "pair_spline_kernel.h"
-
 #include "atom.h"
 #include "comm.h"
 #include "force.h"
@@ -49,13 +47,15 @@ template <class Law> void PairSplineOMP<Law>::compute(int eflag, int vflag)
     StateTally mine;
     try {
       this->dispatch(eflag, [&](auto t, auto mode, auto ev, auto e, auto n) {
-        this->template eval<decltype(t), decltype(mode)::value, decltype(ev)::value,
-                            decltype(e)::value, decltype(n)::value>(
-            ifrom, ito, (xyz3 *) thr->get_f()[0], pass, mine,
+        spline_kernel<Law, decltype(t), decltype(mode)::value, decltype(ev)::value,
+                      decltype(e)::value, decltype(n)::value>(
+            this->kernel_data(), this->list, this->atom, this->force->special_lj, ifrom, ito,
+            (xyz3 *) thr->get_f()[0], pass, mine,
             [&](int i, int j, int nlocal, int newton, double evdwl, double fpair, double dx,
                 double dy, double dz) {
               ev_tally_thr(this, i, j, nlocal, newton, evdwl, 0.0, fpair, dx, dy, dz, thr);
-            });
+            },
+            [this](int i, int j, double rsq) { this->singular_error(i, j, rsq); });
       });
     } catch (...) {    // an exception must not leave an OpenMP region (std::terminate)
 #if defined(_OPENMP)

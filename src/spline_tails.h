@@ -148,6 +148,24 @@ namespace ClusterDyn {
       d[1] = d[1] * k0 + d[0] * k1;
       d[0] *= k0;
     }
+    // the inflection point of the smoothed law: the base's b unless the smoothing starts
+    // before it, then the first zero of Pi'' in (Rs, Rc) (0 if there is none)
+    template <class Law> static double inflection(const SplineCoeff &c, double b)
+    {
+      if (b > 0.0 && c.rs >= b) return b;
+      double lo = c.a > c.rs ? c.a : c.rs, hi = c.rc, d[4];
+      derivs<Law>(c, lo, d);
+      if (d[2] <= 0.0) return lo;
+      derivs<Law>(c, hi * (1.0 - 1e-12), d);
+      if (d[2] > 0.0) return 0.0;
+      while (hi - lo > 1e-15 * hi) {
+        const double mid = 0.5 * (lo + hi);
+        derivs<Law>(c, mid, d);
+        if (d[2] > 0.0) lo = mid;
+        else hi = mid;
+      }
+      return 0.5 * (lo + hi);
+    }
   };
 
   // calls run(Tail()) with the tail policy of a runtime tail id

@@ -4,11 +4,13 @@ rerun, empty processors, unfix of the internal fix, a re-issued pair_style, a li
 leaves the neighbour list, and compute dust evaluated again at the same step.  Oracles: the
 straight run against the split one, compute coord/atom at L a (the pairs a fresh setup links),
 the Morse minimum, the original run's link counts frame by frame, the serial run."""
+import os
 import re
+import subprocess
 
 import numpy as np
 import pytest
-from conftest import PLUGIN, run_lmp, session
+from conftest import LMP, PLUGIN, run_lmp, session
 
 BLOCK = """plugin load {plugin}
 units lj
@@ -225,6 +227,35 @@ def test_unfix_of_the_internal_fix_is_a_clear_error_and_the_host_survives():
             lmp.command("run 0")
         lmp.commands_list(["pair_style morse/spline cut 1.3 link 1.05", "run 0"])    # afresh
         assert lmp.extract_compute("ls", 0, 0) == 2
+
+
+DIMER = f"""plugin load {PLUGIN}
+units lj
+region box block -4 4 -4 4 -4 4
+create_box 1 box
+mass 1 1.0
+create_atoms 1 single 0 0 0 units box
+create_atoms 1 single 1 0 0 units box
+pair_style morse/spline cut 1.3 link 1.05
+pair_coeff * * 1.0 6.0 1.0
+neighbor 0.3 bin
+run 0
+"""
+
+
+@pytest.mark.parametrize("nprocs", [1, 2])
+@pytest.mark.parametrize("change,message", [
+    ("unfix NEIGH_HISTORY_LINK", "its link state \\(fix NEIGH_HISTORY_LINK\\) was deleted by unfix"),
+    ("neigh_modify exclude type 1 1", "1 links left the neighbour list unbroken \\(fix "
+                                      "NEIGH_HISTORY_LINK\\): their atoms are farther apart")])
+def test_unfix_and_lost_links_stop_every_rank_with_the_message(tmp_path, nprocs, change, message):
+    (tmp_path / "in.test").write_text(DIMER + change + "\nrun 0\n")
+    cmd = [LMP, "-in", "in.test", "-log", "none", "-nocite"]
+    if nprocs > 1:
+        cmd = ["mpirun", "-np", str(nprocs), "--oversubscribe"] + cmd
+    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+    out = subprocess.run(cmd, cwd=tmp_path, env=env, capture_output=True, text=True, timeout=120)
+    assert out.returncode != 0 and re.search(message, out.stdout + out.stderr)
 
 
 def test_fix_pair_state_is_internal():

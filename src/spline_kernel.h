@@ -1,19 +1,31 @@
 /* -*- c++ -*- ----------------------------------------------------------
    Cluster-dynamics plugin for LAMMPS: the one force kernel of the spline
-   pair styles, used by the serial styles (pair_spline.cpp, tally ev_tally)
-   and the /omp styles (pair_spline_omp.cpp, each thread's entries and
-   forces, tally ev_tally_thr).
+   pair styles, used by the serial styles (pair_spline.cpp: every list
+   entry, tally ev_tally) and the /omp styles (pair_spline_omp.cpp: each
+   thread's entries and forces, tally ev_tally_thr).  Compiled per law,
+   tail, mode and energy/virial/newton flags.
 ------------------------------------------------------------------------- */
 
-#ifndef LMP_CLUSTERDYN_PAIR_SPLINE_KERNEL_H
-#define LMP_CLUSTERDYN_PAIR_SPLINE_KERNEL_H
+#ifndef LMP_CLUSTERDYN_SPLINE_KERNEL_H
+#define LMP_CLUSTERDYN_SPLINE_KERNEL_H
 
-#include "pair_spline.h"
+#include "pair_state.h"
+#include "spline_links.h"
+#include "xyz3.h"
 
+#include "atom.h"
 #include "neigh_list.h"
 
 namespace LAMMPS_NS {
 namespace ClusterDyn {
+
+  // kernel variants: PLAIN (every kappa 1), KAPPA (some kappa != 1), CHAIN (chain N),
+  // LINK and LINK_KAPPA (link L)
+  struct SplineMode {
+    enum { PLAIN = 0, KAPPA = 1, CHAIN = 2, LINK = 3, LINK_KAPPA = 4 };
+    static constexpr bool kappa(int mode) { return mode != PLAIN && mode != LINK; }
+    static constexpr bool link(int mode) { return mode == LINK || mode == LINK_KAPPA; }
+  };
 
   // chain N: how far apart along the chain two atoms are (0: a periodic image of one atom)
   inline tagint chain_distance(tagint a, tagint b)
@@ -21,19 +33,31 @@ namespace ClusterDyn {
     return a > b ? a - b : b - a;
   }
 
-  template <class Law>
-  template <class TailT, int MODE, int EVFLAG, int EFLAG, int NEWTON_PAIR, class Tally>
-  void PairSpline<Law>::eval(int iifrom, int iito, xyz3 *f, const StatePass &pass,
-                             StateTally &changes, Tally &&tally) const
+  // what the kernel reads of the pair style
+  struct SplineKernelData {
+    const SplineCoeff *coeffs;        // (ntypes+1)^2
+    const LinkCoeff *link_coeffs;     // link modes: (ntypes+1)^2
+    Making making;                    // link modes: how unlinked pairs link during a run
+    int chain_n;
+    const double *chain_scale;        // 1/n^2
+  };
+
+  // the pairs of list entries iifrom..iito-1: forces into f, energy and virial through
+  // tally(i, j, nlocal, newton, evdwl, fpair, dx, dy, dz), state changes into changes;
+  // singular(i, j, rsq) stops at a pair inside the law's singular distance
+  template <class Law, class TailT, int MODE, int EVFLAG, int EFLAG, int NEWTON_PAIR, class Tally,
+            class Singular>
+  void spline_kernel(const SplineKernelData &k, const NeighList *list, const Atom *atom,
+                     const double *special_lj, int iifrom, int iito, xyz3 *f,
+                     const StatePass &pass, StateTally &changes, Tally &&tally,
+                     Singular &&singular)
   {
-    constexpr bool LINKED = mode_link(MODE);
-    constexpr bool KAPPA_ON = mode_kappa(MODE);
-    const Making making = links.making();
+    constexpr bool LINKED = SplineMode::link(MODE);
+    constexpr bool KAPPA_ON = SplineMode::kappa(MODE);
     const tagint *_noalias const tag = atom->tag;
     const auto *_noalias const x = (xyz3 *) atom->x[0];
     const int *_noalias const type = atom->type;
     const int nlocal = atom->nlocal;
-    const double *_noalias const special_lj = force->special_lj;
     const int ntp1 = atom->ntypes + 1;
     const int *_noalias const ilist = list->ilist;
     const int *_noalias const numneigh = list->numneigh;
@@ -43,15 +67,15 @@ namespace ClusterDyn {
     for (int ii = iifrom; ii < iito; ii++) {
       const int i = ilist[ii];
       const double xtmp = x[i].x, ytmp = x[i].y, ztmp = x[i].z;
-      const SplineCoeff *_noalias const ci = coeffs + type[i] * ntp1;
-      const LinkCoeff *const lci = LINKED ? links.coeff.data() + type[i] * ntp1 : nullptr;
+      const SplineCoeff *_noalias const ci = k.coeffs + type[i] * ntp1;
+      const LinkCoeff *const lci = LINKED ? k.link_coeffs + type[i] * ntp1 : nullptr;
       const int *_noalias const jlist = firstneigh[i];
       const int jnum = numneigh[i];
       double fxtmp = 0.0, fytmp = 0.0, fztmp = 0.0;
 
       for (int jj = 0; jj < jnum; jj++) {
         int j = jlist[jj];
-        const double factor_lj = special_lj[sbmask(j)];
+        const double factor_lj = special_lj[j >> SBBITS & 3];
         j &= NEIGHMASK;
         const double delx = xtmp - x[j].x;
         const double dely = ytmp - x[j].y;
@@ -59,18 +83,18 @@ namespace ClusterDyn {
         const double rsq = delx * delx + dely * dely + delz * delz;
         const SplineCoeff &c = ci[type[j]];
         double scale = 1.0;    // chain: the n-th neighbour along the chain feels Pi(r/n)
-        if (MODE == CHAIN) {
+        if (MODE == SplineMode::CHAIN) {
           const tagint n = chain_distance(tag[i], tag[j]);
-          if (n == 0 || n > chain_n) continue;
-          scale = chain_scale[n];
+          if (n == 0 || n > k.chain_n) continue;
+          scale = k.chain_scale[n];
         }
-        const double rsq_law = MODE == CHAIN ? rsq * scale : rsq;
+        const double rsq_law = MODE == SplineMode::CHAIN ? rsq * scale : rsq;
         double e, fpair;
         if constexpr (LINKED) {
           int &word = pass.words[i][jj];
           int linked = pass.trial ? word & 1 : word;
           const Making now = pass.fresh && (!pass.fresh[i] || !pass.fresh[j]) ? MAKE_INITIAL
-                                                                              : making;
+                                                                              : k.making;
           const double w = NEWTON_PAIR || j < nlocal ? 1.0 : 0.5;
           const bool on = SplineLinks::eval<TailT, KAPPA_ON, Law>(c, lci[type[j]], rsq_law, linked,
                                                                   now, w, changes, e, fpair);
@@ -80,7 +104,7 @@ namespace ClusterDyn {
           if (rsq_law >= c.cutsq) continue;
           e = TailT::template eval<KAPPA_ON, Law>(c, rsq_law, fpair) - c.offset;
         }
-        if (rsq_law <= c.hardsq) singular_error(i, j, rsq);
+        if (rsq_law <= c.hardsq) singular(i, j, rsq);
         fpair *= factor_lj * scale;
         fxtmp += delx * fpair;
         fytmp += dely * fpair;

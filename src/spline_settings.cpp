@@ -1,0 +1,131 @@
+/* ----------------------------------------------------------------------
+   Cluster-dynamics plugin for LAMMPS: pair_style arguments of the spline
+   styles (spline_settings.h).
+------------------------------------------------------------------------- */
+
+#include "spline_settings.h"
+
+#include "comm.h"
+
+#include <cstring>
+#include <string>
+
+using namespace LAMMPS_NS;
+using namespace ClusterDyn;
+
+SplineSettings SplineSettings::parse(LAMMPS *lmp, const char *style, bool has_inflection,
+                                     int narg, char **arg)
+{
+  Error *error = lmp->error;
+  SplineSettings s;
+  if (narg < 1)
+    error->all(FLERR, "Pair style {}: missing tail (cut Rc | wagner | lagunov Rc [start Rs])",
+               style);
+  const std::string name = arg[0];
+  int iarg = 1;
+  auto tail_number = [&](const char *what) {
+    if (iarg >= narg || !utils::is_double(arg[iarg]))
+      error->all(FLERR, "Pair style {} {}: expected a number {} (got {})", style, name, what,
+                 iarg < narg ? fmt::format("'{}'", arg[iarg]) : std::string("nothing"));
+    return arg[iarg++];
+  };
+  if (name == "cut") {
+    s.tail = CUT;
+    const char *rc = tail_number("Rc");
+    s.rc = utils::numeric(FLERR, rc, false, lmp);
+    if (!(s.rc > 1.0))
+      error->all(FLERR, "Pair style {} cut: Rc must be > 1 in units of a (got {}): the bond would "
+                 "never hold", style, rc);
+  } else if (name == "wagner") {
+    if (!has_inflection)
+      error->all(FLERR, "Pair style {}: tail wagner needs an inflection point; the harmonic well "
+                 "has none (use cut or lagunov Rc start Rs)", style);
+    if (iarg < narg && utils::is_double(arg[iarg]))
+      error->all(FLERR, "Pair style {} wagner: takes no arguments (got {})", style, arg[iarg]);
+    s.tail = WAGNER;
+  } else if (name == "lagunov") {
+    s.tail = LAGUNOV;
+    const char *rc = tail_number("Rc");
+    s.rc = positive_arg(style, "lagunov Rc", rc, lmp);
+    if (!(s.rc > 1.0))
+      error->all(FLERR, "Pair style {} lagunov: Rc must be > 1 in units of a (got {}): the bond "
+                 "would never hold", style, rc);
+    if (iarg < narg && strcmp(arg[iarg], "start") == 0) {
+      iarg++;
+      const char *rs = tail_number("Rs after start");
+      s.rs = positive_arg(style, "lagunov start Rs", rs, lmp);
+      if (!(s.rc > s.rs))
+        error->all(FLERR, "Pair style {} lagunov: Rc = {} must be > start Rs = {}", style, rc, rs);
+    } else if (!has_inflection)
+      error->all(FLERR, "Pair style {}: tail lagunov needs 'start Rs'; the harmonic well has no "
+                 "inflection point to start at", style);
+  } else
+    error->all(FLERR, "Pair style {}: unknown tail '{}' (expected cut, wagner or lagunov)", style,
+               name);
+
+  // keywords after the tail
+  int relink_set = -1;
+  while (iarg < narg) {
+    const std::string key = arg[iarg];
+    if (key != "chain" && key != "link" && key != "relink")
+      error->all(FLERR, "Pair style {}: unknown keyword '{}' after tail {} (expected chain, link "
+                 "or relink{})", style, key, name, name == "lagunov" ? " or start" : "");
+    if (iarg + 1 >= narg) error->all(FLERR, "Pair style {}: keyword {} needs a value", style, key);
+    if (key == "chain") {
+      s.chain_n = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
+      if (s.chain_n < 1 || s.chain_n > MAX_CHAIN)
+        error->all(FLERR, "Pair style {}: chain N must be between 1 and {} (got {})", style,
+                   MAX_CHAIN, arg[iarg + 1]);
+    } else if (key == "link") {
+      s.link_l = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (!(s.link_l >= 1.0))
+        error->all(FLERR, "Pair style {}: link L must be >= 1 in units of a (got {}): pairs "
+                   "closer than L a are linked", style, arg[iarg + 1]);
+    } else
+      relink_set = utils::logical(FLERR, arg[iarg + 1], false, lmp);
+    iarg += 2;
+  }
+  if (relink_set >= 0 && s.link_l == 0.0)
+    error->all(FLERR, "Pair style {}: relink needs link L", style);
+  if (s.chain_n && s.link_l > 0.0)
+    error->all(FLERR, "Pair style {}: link and chain N do not combine (chain N fixes the "
+               "neighbours by atom ID already)", style);
+  s.relink = relink_set > 0;
+  return s;
+}
+
+void SplineSettings::write_restart(FILE *fp, int offset_flag, int mix_flag) const
+{
+  fwrite(&tail, sizeof(int), 1, fp);
+  fwrite(&rc, sizeof(double), 1, fp);
+  fwrite(&rs, sizeof(double), 1, fp);
+  fwrite(&offset_flag, sizeof(int), 1, fp);
+  fwrite(&mix_flag, sizeof(int), 1, fp);
+  fwrite(&chain_n, sizeof(int), 1, fp);
+  fwrite(&link_l, sizeof(double), 1, fp);
+  fwrite(&relink, sizeof(int), 1, fp);
+}
+
+void SplineSettings::read_restart(FILE *fp, int &offset_flag, int &mix_flag, LAMMPS *lmp)
+{
+  Error *error = lmp->error;
+  if (lmp->comm->me == 0) {
+    utils::sfread(FLERR, &tail, sizeof(int), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &rc, sizeof(double), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &rs, sizeof(double), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &offset_flag, sizeof(int), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &mix_flag, sizeof(int), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &chain_n, sizeof(int), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &link_l, sizeof(double), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &relink, sizeof(int), 1, fp, nullptr, error);
+  }
+  MPI_Comm world = lmp->world;
+  MPI_Bcast(&tail, 1, MPI_INT, 0, world);
+  MPI_Bcast(&rc, 1, MPI_DOUBLE, 0, world);
+  MPI_Bcast(&rs, 1, MPI_DOUBLE, 0, world);
+  MPI_Bcast(&offset_flag, 1, MPI_INT, 0, world);
+  MPI_Bcast(&mix_flag, 1, MPI_INT, 0, world);
+  MPI_Bcast(&chain_n, 1, MPI_INT, 0, world);
+  MPI_Bcast(&link_l, 1, MPI_DOUBLE, 0, world);
+  MPI_Bcast(&relink, 1, MPI_INT, 0, world);
+}
