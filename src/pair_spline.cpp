@@ -56,7 +56,7 @@ template <class Law> void PairSpline<Law>::allocate()
 template <class Law> void PairSpline<Law>::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
-  const StatePass pass = links.on() ? state.begin() : StatePass();
+  const StatePass pass = start_compute();
   StateTally changes;
   dispatch(eflag, [&](auto t, auto mode, auto ev, auto e, auto n) {
     spline_kernel<Law, decltype(t), decltype(mode)::value, decltype(ev)::value,
@@ -73,7 +73,7 @@ template <class Law> void PairSpline<Law>::compute(int eflag, int vflag)
   finish_compute(changes);
 }
 
-// after the kernel, serial and /omp: the link tally, the time-step check
+// before and after the kernel, serial and /omp: the link state and tally, the time-step check
 template <class Law> void PairSpline<Law>::finish_compute(const StateTally &changes)
 {
   if (links.on()) state.end(changes, pvector);

@@ -69,6 +69,7 @@ namespace ClusterDyn {
     {
       return {table.coeffs, links.coeff.data(), links.making(), setting.chain_n, chain_scale.data()};
     }
+    StatePass start_compute() { return links.on() ? state.begin() : StatePass(); }
     void finish_compute(const StateTally &changes);
     [[noreturn]] void singular_error(int i, int j, double rsq) const;
 

@@ -31,7 +31,7 @@ template <class Law> void PairSplineOMP<Law>::compute(int eflag, int vflag)
   const int nall = this->atom->nlocal + this->atom->nghost;
   const int nthreads = this->comm->nthreads;
   const int inum = this->list->inum;
-  const StatePass pass = this->links.on() ? this->state.begin() : StatePass();
+  const StatePass pass = this->start_compute();
   std::exception_ptr failure;    // an error of a thread, raised after the parallel region
   StateTally changes;
 

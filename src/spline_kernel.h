@@ -62,13 +62,21 @@ namespace ClusterDyn {
     const int *_noalias const ilist = list->ilist;
     const int *_noalias const numneigh = list->numneigh;
     int **firstneigh = list->firstneigh;
+    const SplineCoeff *_noalias const coeffs = k.coeffs;
+    const LinkCoeff *const link_coeffs = k.link_coeffs;
+    const Making making = k.making;
+    const int chain_n = k.chain_n;
+    const double *const chain_scale = k.chain_scale;
+    int *const *const words = pass.words;
+    const tagint *const fresh = pass.fresh;
+    const int trial = pass.trial;
     double evdwl = 0.0;
 
     for (int ii = iifrom; ii < iito; ii++) {
       const int i = ilist[ii];
       const double xtmp = x[i].x, ytmp = x[i].y, ztmp = x[i].z;
-      const SplineCoeff *_noalias const ci = k.coeffs + type[i] * ntp1;
-      const LinkCoeff *const lci = LINKED ? k.link_coeffs + type[i] * ntp1 : nullptr;
+      const SplineCoeff *_noalias const ci = coeffs + type[i] * ntp1;
+      const LinkCoeff *const lci = LINKED ? link_coeffs + type[i] * ntp1 : nullptr;
       const int *_noalias const jlist = firstneigh[i];
       const int jnum = numneigh[i];
       double fxtmp = 0.0, fytmp = 0.0, fztmp = 0.0;
@@ -85,20 +93,26 @@ namespace ClusterDyn {
         double scale = 1.0;    // chain: the n-th neighbour along the chain feels Pi(r/n)
         if (MODE == SplineMode::CHAIN) {
           const tagint n = chain_distance(tag[i], tag[j]);
-          if (n == 0 || n > k.chain_n) continue;
-          scale = k.chain_scale[n];
+          if (n == 0 || n > chain_n) continue;
+          scale = chain_scale[n];
         }
         const double rsq_law = MODE == SplineMode::CHAIN ? rsq * scale : rsq;
         double e, fpair;
         if constexpr (LINKED) {
-          int &word = pass.words[i][jj];
-          int linked = pass.trial ? word & 1 : word;
-          const Making now = pass.fresh && (!pass.fresh[i] || !pass.fresh[j]) ? MAKE_INITIAL
-                                                                              : k.making;
+          int &word = words[i][jj];
+          const Making now = fresh && (!fresh[i] || !fresh[j]) ? MAKE_INITIAL : making;
           const double w = NEWTON_PAIR || j < nlocal ? 1.0 : 0.5;
-          const bool on = SplineLinks::eval<TailT, KAPPA_ON, Law>(c, lci[type[j]], rsq_law, linked,
-                                                                  now, w, changes, e, fpair);
-          word = state_word(word, linked, pass.trial);
+          const LinkCoeff &lc = lci[type[j]];
+          bool on;
+          if (!trial) {    // the word is the state
+            on = SplineLinks::eval<TailT, KAPPA_ON, Law>(c, lc, rsq_law, word, now, w, changes, e,
+                                                         fpair);
+          } else {    // a minimizer's trial point: the change is only marked
+            int linked = word & 1;
+            on = SplineLinks::eval<TailT, KAPPA_ON, Law>(c, lc, rsq_law, linked, now, w, changes,
+                                                         e, fpair);
+            word = state_word(word, linked, 1);
+          }
           if (!on) continue;
         } else {
           if (rsq_law >= c.cutsq) continue;
