@@ -41,7 +41,6 @@
 #include "update.h"
 
 #include <algorithm>
-#include <cstring>
 #include <map>
 #include <set>
 #include <unordered_map>
@@ -59,29 +58,29 @@ ComputeDust::ComputeDust(LAMMPS *lmp, int narg, char **arg) :
     state(nullptr), list(nullptr), nmax(0), fragments(nullptr), nrows(0), maxrows(0),
     rows(nullptr), evaluated(-1)
 {
-  for (int iarg = 3; iarg < narg; iarg += 2) {
+  for (int iarg = 3; iarg < narg; iarg++) {
     const std::string key = arg[iarg];
     if (key == "links") {    // a flag: the bonds are the pair style's links
       links = 1;
-      iarg--;
       continue;
     }
-    if (iarg + 1 >= narg) error->all(FLERR, "Compute dust: keyword {} needs a value", key);
-    if (key == "cutoff") {
-      cutoff_user = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
-      if (!(cutoff_user > 0.0))
-        error->all(FLERR, "Compute dust: cutoff must be > 0 (got {})", arg[iarg + 1]);
-    } else if (key == "maxsize") {
-      maxsize = utils::bnumeric(FLERR, arg[iarg + 1], false, lmp);
-      if (maxsize < 1) error->all(FLERR, "Compute dust: maxsize must be >= 1 (got {})", arg[iarg + 1]);
-    } else if (key == "rows") {
-      const std::string which = arg[iarg + 1];
-      if (which != "all" && which != "dust")
-        error->all(FLERR, "Compute dust: rows must be all or dust (got {})", which);
-      dust_rows = which == "dust";
-    } else
+    if (key != "cutoff" && key != "maxsize" && key != "rows")
       error->all(FLERR, "Compute dust: unknown keyword '{}' (expected cutoff, maxsize, links "
                  "or rows)", key);
+    if (++iarg >= narg) error->all(FLERR, "Compute dust: keyword {} needs a value", key);
+    const std::string value = arg[iarg];
+    if (key == "cutoff") {
+      cutoff_user = utils::numeric(FLERR, value, false, lmp);
+      if (!(cutoff_user > 0.0))
+        error->all(FLERR, "Compute dust: cutoff must be > 0 (got {})", value);
+    } else if (key == "maxsize") {
+      maxsize = utils::bnumeric(FLERR, value, false, lmp);
+      if (maxsize < 1) error->all(FLERR, "Compute dust: maxsize must be >= 1 (got {})", value);
+    } else {
+      if (value != "all" && value != "dust")
+        error->all(FLERR, "Compute dust: rows must be all or dust (got {})", value);
+      dust_rows = value == "dust";
+    }
   }
   if (links && cutoff_user > 0.0)
     error->all(FLERR, "Compute dust: keywords links and cutoff exclude each other (the links are "
@@ -164,12 +163,6 @@ void ComputeDust::compute_local()
   if (evaluated != update->ntimestep) evaluate();
 }
 
-int ComputeDust::find(int i)
-{
-  while (parent[i] != i) i = parent[i] = parent[parent[i]];
-  return i;
-}
-
 /* ---------------------------------------------------------------------- */
 
 void ComputeDust::evaluate()
@@ -195,18 +188,17 @@ void ComputeDust::evaluate()
 
   // 1. union-find over my atoms and ghosts; images of one atom are one node
 
-  parent.resize(nall);
-  for (int i = 0; i < nall; i++) parent[i] = i;
+  sets.reset(nall);
   if (atom->map_style != Atom::MAP_NONE) {
     for (int i = nlocal; i < nall; i++) {
       const int canonical = atom->map(tag[i]);
-      if (canonical >= 0 && canonical != i) parent[find(i)] = find(canonical);
+      if (canonical >= 0 && canonical != i) sets.join(i, canonical);
     }
   } else {    // no atom map: one of our own, my atoms first (as atom->map prefers them)
     std::unordered_map<tagint, int> first(2 * nall);
     for (int i = 0; i < nall; i++) {
       const auto seen = first.emplace(tag[i], i);
-      if (!seen.second) parent[find(i)] = find(seen.first->second);
+      if (!seen.second) sets.join(i, seen.first->second);
     }
   }
   // bonds: pairs closer than the bond distance, or (links) the pair style's intact links
@@ -227,8 +219,7 @@ void ComputeDust::evaluate()
         const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
         if (dx * dx + dy * dy + dz * dz >= cutsq[type[i] * ntp1 + type[j]]) continue;
       }
-      const int ri = find(i), rj = find(j);
-      if (ri != rj) parent[std::max(ri, rj)] = std::min(ri, rj);
+      sets.join(i, j);
     }
   }
 
@@ -236,11 +227,12 @@ void ComputeDust::evaluate()
   std::vector<tagint> setmin(nall, MAXTAGINT);
   for (int i = 0; i < nall; i++)
     if (mask[i] & groupbit) {
-      const int r = find(i);
+      const int r = sets.find(i);
       setmin[r] = std::min(setmin[r], tag[i]);
     }
   label.resize(nall);
-  for (int i = 0; i < nall; i++) label[i] = (mask[i] & groupbit) ? (double) setmin[find(i)] : 0.0;
+  for (int i = 0; i < nall; i++)
+    label[i] = (mask[i] & groupbit) ? (double) setmin[sets.find(i)] : 0.0;
 
   // 2. ghosts learn the label of their atom on its owner
 
@@ -253,7 +245,7 @@ void ComputeDust::evaluate()
     std::set<std::pair<tagint, tagint>> seen;    // few distinct pairs: per fragment and neighbour
     for (int i = nlocal; i < nall; i++) {
       if (!(mask[i] & groupbit)) continue;
-      const tagint a = setmin[find(i)], b = (tagint) label[i];
+      const tagint a = setmin[sets.find(i)], b = (tagint) label[i];
       if (a != b && seen.emplace(std::min(a, b), std::max(a, b)).second) {  // new pair
         pairs.push_back(std::min(a, b));
         pairs.push_back(std::max(a, b));
@@ -261,15 +253,8 @@ void ComputeDust::evaluate()
     }
   }
   const std::vector<tagint> allpairs = allgatherv(pairs, MPI_LMP_TAGINT, world);
-  std::unordered_map<tagint, tagint> up;    // label -> smaller label of the same fragment
-  auto root = [&](tagint t) {
-    for (auto it = up.find(t); it != up.end(); it = up.find(t)) t = it->second;
-    return t;
-  };
-  for (size_t k = 0; k < allpairs.size(); k += 2) {
-    const tagint ra = root(allpairs[k]), rb = root(allpairs[k + 1]);
-    if (ra != rb) up[std::max(ra, rb)] = std::min(ra, rb);
-  }
+  LabelUnion fragment;    // label -> the fragment's ID (its smallest label)
+  for (size_t k = 0; k < allpairs.size(); k += 2) fragment.join(allpairs[k], allpairs[k + 1]);
 
   // 4. per-fragment sums, each combined on the fragment's owner (ID modulo nprocs):
   //    one MPI_Alltoallv there, one back with the size and dust flag
@@ -278,7 +263,7 @@ void ComputeDust::evaluate()
   for (int i = 0; i < nlocal; i++) {
     fragments[i][FRAGMENT_ID] = fragments[i][FRAGMENT_SIZE] = fragments[i][DUST_FLAG] = 0.0;
     if (!(mask[i] & groupbit)) continue;
-    const tagint id = root((tagint) label[i]);
+    const tagint id = fragment.root((tagint) label[i]);
     fragments[i][FRAGMENT_ID] = id;
     const double m = atom->rmass ? atom->rmass[i] : atom->mass[type[i]];
     double xu[3];
@@ -409,5 +394,5 @@ void ComputeDust::unpack_forward_comm(int n, int first, double *buf)
 double ComputeDust::memory_usage()
 {
   return (double) nmax * 3 * sizeof(double) + (double) maxrows * NCOLS * sizeof(double) +
-      parent.capacity() * sizeof(int) + label.capacity() * sizeof(double);
+      sets.memory_usage() + label.capacity() * sizeof(double);
 }

@@ -7,6 +7,7 @@
 #define LMP_CLUSTERDYN_COMPUTE_DUST_H
 
 #include "compute.h"
+#include "union_find.h"
 
 #include <array>
 #include <vector>
@@ -42,12 +43,11 @@ namespace ClusterDyn {
     double **fragments;        // per atom: fragment ID, size, dust flag
     int nrows, maxrows;
     double **rows;             // local: the fragments I own, one row each
-    std::vector<int> parent;   // union-find over my atoms and ghosts
+    UnionFind sets;            // over my atoms and ghosts
     std::vector<double> label; // per atom (and ghost): local fragment label
     bigint evaluated;          // step of the last evaluation
 
     void evaluate();
-    int find(int i);
   };
 
 }    // namespace ClusterDyn

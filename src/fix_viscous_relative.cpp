@@ -43,42 +43,10 @@ using namespace FixConst;
 using namespace ClusterDyn;
 
 FixViscousRelative::FixViscousRelative(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), typepair(nullptr), fd(nullptr), maxfd(0),
+    Fix(lmp, narg, arg), opt(ViscousSettings::parse(lmp, narg, arg)), typepair(nullptr),
+    fd(nullptr), maxfd(0),
     removed(0.0), power_full(0.0), list(nullptr)
 {
-  if (narg < 5)
-    error->all(FLERR, "Fix viscous/relative: expected fix ID group viscous/relative gamma G | J J "
-               "[mode full|normal] [weight none|dpd] [cutoff d]");
-  if (strcmp(arg[3], "gamma") == 0) by_j = 0;
-  else if (strcmp(arg[3], "J") == 0) by_j = 1;
-  else error->all(FLERR, "Fix viscous/relative: unknown style '{}' (expected gamma or J)", arg[3]);
-  value = utils::numeric(FLERR, arg[4], false, lmp);
-  if (!(value > 0.0))
-    error->all(FLERR, "Fix viscous/relative: {} must be > 0 (got {})", arg[3], arg[4]);
-
-  normal = dpd = 0;
-  cutoff_user = 0.0;
-  for (int iarg = 5; iarg < narg; iarg += 2) {
-    if (iarg + 1 >= narg)
-      error->all(FLERR, "Fix viscous/relative: keyword {} needs a value", arg[iarg]);
-    const std::string key = arg[iarg], val = arg[iarg + 1];
-    if (key == "mode") {
-      if (val == "full") normal = 0;
-      else if (val == "normal") normal = 1;
-      else error->all(FLERR, "Fix viscous/relative: unknown mode '{}' (expected full or normal)", val);
-    } else if (key == "weight") {
-      if (val == "none") dpd = 0;
-      else if (val == "dpd") dpd = 1;
-      else error->all(FLERR, "Fix viscous/relative: unknown weight '{}' (expected none or dpd)", val);
-    } else if (key == "cutoff") {
-      cutoff_user = utils::numeric(FLERR, val, false, lmp);
-      if (!(cutoff_user > 0.0))
-        error->all(FLERR, "Fix viscous/relative: cutoff must be > 0 (got {})", val);
-    } else
-      error->all(FLERR, "Fix viscous/relative: unknown keyword '{}' (expected mode, weight or "
-                 "cutoff)", key);
-  }
-
   scalar_flag = 1;
   global_freq = 1;
   extscalar = 1;
@@ -107,11 +75,11 @@ void FixViscousRelative::init()
   if (utils::strmatch(update->integrate_style, "^respa"))
     error->all(FLERR, "Fix viscous/relative does not support run_style respa: its energy "
                "tally follows velocity Verlet's half kicks (use run_style verlet)");
-  if (!force->pair && cutoff_user == 0.0)
+  if (!force->pair && opt.cutoff == 0.0)
     error->all(FLERR, "Fix viscous/relative needs a pair style (its cutoffs are the damping "
                "range) or the cutoff keyword");
   double **stiffness = nullptr;
-  if (by_j) {
+  if (opt.by_j) {
     int dim = 0;
     if (force->pair) stiffness = (double **) force->pair->extract("C", dim);
     if (!stiffness || dim != 2)
@@ -122,14 +90,14 @@ void FixViscousRelative::init()
   for (int i = 1; i <= ntypes; i++)
     for (int j = 1; j <= ntypes; j++) {
       TypePair &tp = typepair[i * (ntypes + 1) + j];
-      tp.cutsq = cutoff_user > 0.0 ? cutoff_user * cutoff_user : force->pair->cutsq[i][j];
+      tp.cutsq = opt.cutoff > 0.0 ? opt.cutoff * opt.cutoff : force->pair->cutsq[i][j];
       tp.inv_cut = tp.cutsq > 0.0 ? 1.0 / sqrt(tp.cutsq) : 0.0;
-      tp.stiffness = by_j ? stiffness[i][j] : 0.0;
+      tp.stiffness = opt.by_j ? stiffness[i][j] : 0.0;
       tp.coef = atom->rmass ? 0.0 : friction(tp, atom->mass[i], atom->mass[j]);
     }
 
-  if (cutoff_user > 0.0)
-    check_neighbor_skin(lmp, force->pair ? MAX(cutoff_user, force->pair->cutforce) : cutoff_user,
+  if (opt.cutoff > 0.0)
+    check_neighbor_skin(lmp, force->pair ? MAX(opt.cutoff, force->pair->cutforce) : opt.cutoff,
                         "Fix viscous/relative");
 
   // relative velocities need ghost velocities
@@ -137,14 +105,14 @@ void FixViscousRelative::init()
 
   // the pair style's list covers the damping range unless the cutoff is longer
   auto req = neighbor->add_request(this);
-  if (cutoff_user > 0.0 && (!force->pair || cutoff_user > force->pair->cutforce)) {
+  if (opt.cutoff > 0.0 && (!force->pair || opt.cutoff > force->pair->cutforce)) {
     const double skin = neighbor->skin;
     const double cutghost = force->pair ? MAX(force->pair->cutforce + skin, comm->cutghostuser)
                                         : comm->cutghostuser;
-    if (cutoff_user + skin > cutghost)
+    if (opt.cutoff + skin > cutghost)
       error->all(FLERR, "Fix viscous/relative: cutoff {} plus skin {} exceeds the ghost atom "
-                 "range {}: raise it with comm_modify cutoff", cutoff_user, skin, cutghost);
-    req->set_cutoff(cutoff_user + skin);
+                 "range {}: raise it with comm_modify cutoff", opt.cutoff, skin, cutghost);
+    req->set_cutoff(opt.cutoff + skin);
   }
 }
 
@@ -181,7 +149,7 @@ void FixViscousRelative::post_integrate()
 
 double FixViscousRelative::rate(const TypePair &tp, double mij) const
 {
-  return by_j ? sqrt(force->ftm2v * tp.stiffness / mij) / value : value;
+  return opt.rate(tp.stiffness, mij, force->ftm2v);
 }
 
 double FixViscousRelative::friction(const TypePair &tp, double mi, double mj) const
@@ -199,11 +167,9 @@ double FixViscousRelative::power() const
   return p;
 }
 
-/* ---------------------------------------------------------------------- */
-
-double FixViscousRelative::compute_forces(int vflag)
+// fd for my atoms and ghosts, zeroed
+void FixViscousRelative::clear_fd()
 {
-  v_init(vflag);
   if (atom->nmax > maxfd) {
     maxfd = atom->nmax;
     memory->destroy(fd);
@@ -211,16 +177,22 @@ double FixViscousRelative::compute_forces(int vflag)
   }
   const int nall = atom->nlocal + atom->nghost;
   if (nall) memset(&fd[0][0], 0, 3 * sizeof(double) * nall);
+}
+
+double FixViscousRelative::compute_forces(int vflag)
+{
+  v_init(vflag);
+  clear_fd();
 
   // compile-time options: a scene pays only for what it uses
   const int rmass = atom->rmass != nullptr;
   const int all = groupbit == 1;    // group all: no mask lookups
   if (rmass || !all) {
-    if (normal) dpd ? damp<1, 1, 1>() : damp<1, 0, 1>();
-    else dpd ? damp<0, 1, 1>() : damp<0, 0, 1>();
+    if (opt.normal) opt.dpd ? damp<1, 1, 1>() : damp<1, 0, 1>();
+    else opt.dpd ? damp<0, 1, 1>() : damp<0, 0, 1>();
   } else {
-    if (normal) dpd ? damp<1, 1, 0>() : damp<1, 0, 0>();
-    else dpd ? damp<0, 1, 0>() : damp<0, 0, 0>();
+    if (opt.normal) opt.dpd ? damp<1, 1, 0>() : damp<1, 0, 0>();
+    else opt.dpd ? damp<0, 1, 0>() : damp<0, 0, 0>();
   }
   if (force->newton_pair) comm->reverse_comm(this);
 
@@ -313,13 +285,7 @@ template <int NORMAL, int DPD, int GENERAL> void FixViscousRelative::damp()
 void FixViscousRelative::check_stability()
 {
   const int nlocal = atom->nlocal;
-  if (atom->nmax > maxfd) {
-    maxfd = atom->nmax;
-    memory->destroy(fd);
-    memory->create(fd, maxfd, 3, "viscous/relative:fd");
-  }
-  const int nall = nlocal + atom->nghost;
-  if (nall) memset(&fd[0][0], 0, 3 * sizeof(double) * nall);
+  clear_fd();    // fd[i][0]: bonds of atom i
   const double *const *const x = atom->x;
   const int *type = atom->type;
   const int *mask = atom->mask;

@@ -7,6 +7,7 @@
 #define LMP_CLUSTERDYN_FIX_VISCOUS_RELATIVE_H
 
 #include "fix.h"
+#include "viscous_settings.h"
 
 namespace LAMMPS_NS {
 namespace ClusterDyn {
@@ -30,10 +31,7 @@ namespace ClusterDyn {
     double memory_usage() override;
 
    private:
-    int by_j;                // 0: rate G given; 1: G_ij = sqrt(C_ij / m_ij) / J
-    double value;            // G or J
-    int normal, dpd;         // mode normal, weight dpd
-    double cutoff_user;      // 0: the pair style's cutoff of each type pair
+    ViscousSettings opt;     // the fix's arguments
     struct TypePair {
       double cutsq;          // damping range, squared
       double inv_cut;        // 1 / damping range (weight dpd)
@@ -47,6 +45,7 @@ namespace ClusterDyn {
     double power_full;       // sum of fd . v at the last full step (trapezoid rule)
     class NeighList *list;
 
+    void clear_fd();
     double compute_forces(int vflag);    // returns the power sum of my atoms
     template <int NORMAL, int DPD, int GENERAL> void damp();
     double rate(const TypePair &tp, double mij) const;    // G_ij (1/time)

@@ -2,7 +2,8 @@
 # Compares two builds of the plugin to the last bit: forces, energies, virials, positions and
 # velocities written with %.17g after the benchmark block (in.bench_pair, 200 steps, cut and
 # link) and a shortened shock-3d default scene (to 0.3 us, plain and link 1.05), serial and
-# -sf omp with 2 threads, and the block with the other tails, kappa and laws (serial).
+# -sf omp with 2 threads, and the block with the other tails, kappa and laws and with fix
+# viscous/relative (serial).
 # Prints one line per case, "identical" or the energies that differ.
 #   bash doc/benchmarks/bit_compare.sh BUILD_A BUILD_B    (folders with env.sh)
 set -euo pipefail
@@ -50,5 +51,6 @@ case_ "block wagner" in.block -var steps 200 -var temp 1e16 -var pair "morse/spl
 case_ "block lagunov 1.3 start 1.1, kappa 1.1" in.block -var steps 200 -var temp 1e16 -var pair "morse/spline lagunov 1.3 start 1.1" -var coeff "$D $ALPHA $A_ kappa 1.1"
 case_ "block lj/spline cut 1.2 kappa 1.1 link 1.05" in.block -var steps 200 -var temp 1e16 -var pair "lj/spline cut 1.2 link 1.05" -var coeff "$LJ kappa 1.1"
 case_ "block mie/spline lagunov 1.3" in.block -var steps 200 -var temp 1e16 -var pair "mie/spline lagunov 1.3" -var coeff "$LJ 9 6"
+case_ "block cut 1.2 with fix viscous/relative J 50" in.block -var steps 200 -var temp 1e16 -var pair "morse/spline cut 1.2" -var coeff "$D $ALPHA $A_" -var dampon 1
 case_ "block harmonic/spline cut 1.1" in.block -var steps 200 -var temp 1e16 -var pair "harmonic/spline cut 1.1" -var coeff "$D $ALPHA $A_"
 rm -rf "$work"

@@ -172,6 +172,8 @@ BAD = [
     ("maxsize 0", "maxsize must be >= 1"),
     ("cutoff", "keyword cutoff needs a value"),
     ("size 3", "unknown keyword 'size'"),
+    ("foo", "unknown keyword 'foo'"),    # last on the line: unknown, not "needs a value"
+    ("links foo", "unknown keyword 'foo'"),
     ("rows body", "rows must be all or dust"),
 ]
 
