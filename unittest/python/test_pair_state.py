@@ -210,6 +210,81 @@ print "RESULT fragments $(c_d[6])"
     assert results(run_lmp(tmp_path, empty, nprocs, name="in.empty"))["fragments"] == 0
 
 
+@pytest.mark.parametrize("nprocs", [1, 2])
+def test_atoms_created_after_the_links_are_linked_at_the_next_setup(tmp_path, nprocs):
+    # the left half is linked and strained so that its links differ from distances; new atoms
+    # on the right link to their neighbours closer than L a (old ones included), the old links
+    # stay as they were
+    script = f"""plugin load {PLUGIN}
+units lj
+lattice fcc 1.41421356
+region box block 0 8 0 4 0 4
+create_box 1 box
+region left block 0 3.99 INF INF INF INF
+create_atoms 1 region left
+mass 1 1.0
+pair_style morse/spline cut 1.2 link 1.05
+pair_coeff * * 1.0 6.0 1.0
+neighbor 0.2 bin
+compute l all links/atom
+compute ls all reduce sum c_l
+compute c all coord/atom cutoff 1.05
+variable diff atom abs(c_l-c_c)
+compute diff all reduce sum v_diff
+run 0
+print "RESULT alinks $(c_ls)"
+region right block 4 8 INF INF INF INF
+create_atoms 1 region right
+run 0
+print "RESULT blinks $(c_ls)"
+print "RESULT bdiff $(c_diff)"
+print "RESULT natoms $(atoms)"
+"""
+    r = results(run_lmp(tmp_path, script, nprocs))
+    assert r["natoms"] == 512 and r["alinks"] < 12 * 256    # the left half's surfaces
+    assert r["bdiff"] == 0 and r["blinks"] == 12 * 512    # a full periodic crystal now
+
+
+@pytest.mark.parametrize("nprocs", [1, 2])
+def test_a_restart_written_before_any_run_links_at_the_first_run_after_reading(tmp_path, nprocs):
+    a = block() + "write_restart early.restart\n"
+    b = f"plugin load {PLUGIN}\nread_restart early.restart\nneighbor 0.2 bin\n" + \
+        BLOCK.split("neighbor 0.2 bin\n")[1] + "run 0\n" + report("r")
+    run_lmp(tmp_path, a, nprocs)
+    r = results(run_lmp(tmp_path, b, nprocs, name="in.b"))
+    assert r["rlinks"] == 12 * 256 and r["rdiff"] == 0
+
+
+@pytest.mark.parametrize("nprocs", [1, 2])
+def test_compute_dust_after_displace_atoms_at_the_same_step_on_ranks(tmp_path, nprocs):
+    script = f"""plugin load {PLUGIN}
+units lj
+boundary f p p
+lattice fcc 1.41421356
+region box block -1 9 0 4 0 4
+create_box 1 box
+region b block 0 4 0 4 0 4
+create_atoms 1 region b
+mass 1 1.0
+pair_style morse/spline cut 1.2
+pair_coeff * * 1.0 6.0 1.0
+neighbor 0.2 bin
+compute d all dust
+thermo_style custom step c_d[5] c_d[6]
+run 0
+print "RESULT alargest $(c_d[5])"
+region right block 2 4 INF INF INF INF
+group right region right
+displace_atoms right move 3 0 0 units box
+run 0
+print "RESULT blargest $(c_d[5])"
+print "RESULT bfragments $(c_d[6])"
+print "RESULT natoms $(atoms)"
+"""
+    r = results(run_lmp(tmp_path, script, nprocs))
+    assert r["alargest"] == r["natoms"] and r["bfragments"] == 2 and r["blargest"] < r["natoms"]
+
+
 def dimer_session(lmp, style="morse/spline cut 1.3 link 1.05", r=1.0):
     lmp.commands_list(["units lj", "region box block -4 4 -4 4 -4 4", "create_box 1 box",
                        "mass 1 1.0", "create_atoms 1 single 0 0 0 units box",
