@@ -59,10 +59,14 @@ FixDescentNormalized::FixDescentNormalized(LAMMPS *lmp, int narg, char **arg) :
         error->all(FLERR, "Fix descent/normalized: min Hmin must be in [0,h] (got {})",
                    arg[iarg + 1]);
     } else if (key == "inertia") {
-      nmemory = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
-      if (nmemory < 1)
+      const double m = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (!(m >= 1.0))
         error->all(FLERR, "Fix descent/normalized: inertia M must be >= 1 (got {})",
                    arg[iarg + 1]);
+      if (!(m <= MAX_MEMORY) || m != floor(m))
+        error->all(FLERR, "Fix descent/normalized: inertia M must be an integer <= {} (got {}): "
+                   "the memory holds 3 M values per atom", MAX_MEMORY, arg[iarg + 1]);
+      nmemory = (int) m;
       kinertia = utils::numeric(FLERR, arg[iarg + 2], false, lmp);
       if (!(kinertia >= 0.0 && kinertia < 1.0))
         error->all(FLERR, "Fix descent/normalized: inertia K must be in [0,1) (got {})",
@@ -116,6 +120,9 @@ void FixDescentNormalized::init()
     error->all(FLERR, "Fix descent/normalized needs run_style verlet (got {})",
                update->integrate_style);
   check_integrators();
+  if (nmemory && !(update->dt > 0.0))
+    error->all(FLERR, "Fix descent/normalized: inertia needs a time step > 0 (got {}): the "
+               "velocities are the mean displacement / dt", update->dt);
 }
 
 // no other time integrator may move the atoms this fix moves
@@ -271,6 +278,7 @@ int FixDescentNormalized::pack_restart(int i, double *buf)
 
 void FixDescentNormalized::unpack_restart(int nlocal, int nth)
 {
+  if (!nmemory) return;    // written with inertia, read without: nothing to keep
   double **extra = atom->extra;
   int m = 0;
   for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);

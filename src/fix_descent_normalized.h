@@ -50,6 +50,7 @@ namespace ClusterDyn {
     int nfilled;          // displacements held per atom so far (<= M)
     int slot;             // ring position of the oldest displacement (the next overwritten)
     int nper;             // values per atom: 3 M ring + 3 running sum
+    static constexpr int MAX_MEMORY = 1000;    // inertia M
     std::vector<double **> rings;   // rings[m][i]: atom i's displacement in ring slot m
     double **sum;         // per atom: the sum of its ring (each array contiguous over atoms)
     double dmax_local;    // largest displacement of my atoms in the last iteration

@@ -21,6 +21,7 @@
 
 #include "fix_viscous_relative.h"
 
+#include "pair_state.h"
 #include "xyz3.h"
 #include "skin_check.h"
 
@@ -37,6 +38,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <type_traits>
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
@@ -45,7 +47,7 @@ using namespace ClusterDyn;
 FixViscousRelative::FixViscousRelative(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), opt(ViscousSettings::parse(lmp, narg, arg)), typepair(nullptr),
     fd(nullptr), maxfd(0),
-    removed(0.0), power_full(0.0), list(nullptr)
+    removed(0.0), power_full(0.0), list(nullptr), state(nullptr)
 {
   scalar_flag = 1;
   global_freq = 1;
@@ -78,9 +80,13 @@ void FixViscousRelative::init()
   if (!force->pair && opt.cutoff == 0.0)
     error->all(FLERR, "Fix viscous/relative needs a pair style (its cutoffs are the damping "
                "range) or the cutoff keyword");
+  int dim = 0;
+  state = force->pair ? (PairState *) force->pair->extract("pair_state", dim) : nullptr;
+  if (state && opt.cutoff > 0.0)
+    error->all(FLERR, "Fix viscous/relative: keyword cutoff does not apply under a pair style "
+               "with link L (the linked pairs are the bonds it damps)");
   double **stiffness = nullptr;
   if (opt.by_j) {
-    int dim = 0;
     if (force->pair) stiffness = (double **) force->pair->extract("C", dim);
     if (!stiffness || dim != 2)
       error->all(FLERR, "Fix viscous/relative J needs a pair style that provides the bond "
@@ -103,7 +109,9 @@ void FixViscousRelative::init()
   // relative velocities need ghost velocities
   comm->ghost_velocity = 1;
 
-  // the pair style's list covers the damping range unless the cutoff is longer
+  // linked pairs: the pair style's list and states; else a list of our own, which the pair
+  // style's covers unless the cutoff is longer
+  if (state) return;
   auto req = neighbor->add_request(this);
   if (opt.cutoff > 0.0 && (!force->pair || opt.cutoff > force->pair->cutforce)) {
     const double skin = neighbor->skin;
@@ -185,15 +193,18 @@ double FixViscousRelative::compute_forces(int vflag)
   clear_fd();
 
   // compile-time options: a scene pays only for what it uses
-  const int rmass = atom->rmass != nullptr;
-  const int all = groupbit == 1;    // group all: no mask lookups
-  if (rmass || !all) {
-    if (opt.normal) opt.dpd ? damp<1, 1, 1>() : damp<1, 0, 1>();
-    else opt.dpd ? damp<0, 1, 1>() : damp<0, 0, 1>();
-  } else {
-    if (opt.normal) opt.dpd ? damp<1, 1, 0>() : damp<1, 0, 0>();
-    else opt.dpd ? damp<0, 1, 0>() : damp<0, 0, 0>();
-  }
+  const Bonds bonds = current_bonds();
+  const int general = atom->rmass != nullptr || groupbit != 1;    // group all: no mask lookups
+  auto run = [&](auto normal, auto dpd) {
+    using I = decltype(normal);
+    using J = decltype(dpd);
+    if (general) bonds.words ? damp<I::value, J::value, 1, 1>(bonds) : damp<I::value, J::value, 1, 0>(bonds);
+    else bonds.words ? damp<I::value, J::value, 0, 1>(bonds) : damp<I::value, J::value, 0, 0>(bonds);
+  };
+  using I0 = std::integral_constant<int, 0>;
+  using I1 = std::integral_constant<int, 1>;
+  if (opt.normal) opt.dpd ? run(I1(), I1()) : run(I1(), I0());
+  else opt.dpd ? run(I0(), I1()) : run(I0(), I0());
   if (force->newton_pair) comm->reverse_comm(this);
 
   // add to the forces; return the power sum fd . v of my atoms
@@ -209,8 +220,18 @@ double FixViscousRelative::compute_forces(int vflag)
   return p;
 }
 
-// GENERAL: per-atom masses or a group other than all (else: per-type masses, group all)
-template <int NORMAL, int DPD, int GENERAL> void FixViscousRelative::damp()
+// the pairs damped: those of our list within the damping range, or the pair style's links
+FixViscousRelative::Bonds FixViscousRelative::current_bonds() const
+{
+  if (!state) return {list, nullptr};
+  const StateView view = state->view();    // made at the setup, before the fix's setup
+  return {view.list, view.words};
+}
+
+// GENERAL: per-atom masses or a group other than all (else: per-type masses, group all);
+// LINKED: only the pair style's linked pairs
+template <int NORMAL, int DPD, int GENERAL, int LINKED>
+void FixViscousRelative::damp(const Bonds &bonds)
 {
   const auto *_noalias const x = (xyz3 *) atom->x[0];
   const auto *_noalias const v = (xyz3 *) atom->v[0];
@@ -221,6 +242,7 @@ template <int NORMAL, int DPD, int GENERAL> void FixViscousRelative::damp()
   const int nlocal = atom->nlocal;
   const int newton_pair = force->newton_pair;
   const int ntp1 = atom->ntypes + 1;
+  const NeighList *const list = bonds.list;
   const int inum = list->inum;
 
   for (int ii = 0; ii < inum; ii++) {
@@ -240,6 +262,7 @@ template <int NORMAL, int DPD, int GENERAL> void FixViscousRelative::damp()
       const double rsq = delx * delx + dely * dely + delz * delz;
       const TypePair &tp = tpi[type[j]];
       if (rsq >= tp.cutsq || (GENERAL && !(mask[j] & groupbit))) continue;
+      if (LINKED && !state_now(bonds.words[i][jj])) continue;
 
       double coef = GENERAL && rmass ? friction(tp, rmass[i], rmass[j]) : tp.coef;
       if (DPD) {
@@ -290,6 +313,8 @@ void FixViscousRelative::check_stability()
   const int *type = atom->type;
   const int *mask = atom->mask;
   double rate_max = 0.0;
+  const Bonds bonds = current_bonds();
+  const NeighList *const list = bonds.list;
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];
     if (!(mask[i] & groupbit)) continue;
@@ -299,6 +324,7 @@ void FixViscousRelative::check_stability()
       const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
       const TypePair &tp = typepair[type[i] * (atom->ntypes + 1) + type[j]];
       if (dx * dx + dy * dy + dz * dz >= tp.cutsq) continue;
+      if (bonds.words && !state_now(bonds.words[i][jj])) continue;
       fd[i][0] += 1.0;
       if (force->newton_pair || j < nlocal) fd[j][0] += 1.0;
       const double mi = atom->rmass ? atom->rmass[i] : atom->mass[type[i]];
@@ -307,9 +333,9 @@ void FixViscousRelative::check_stability()
     }
   }
   if (force->newton_pair) comm->reverse_comm(this);
-  double bonds = 0.0;
-  for (int i = 0; i < nlocal; i++) bonds = MAX(bonds, fd[i][0]);
-  double mine[2] = {bonds, rate_max}, all[2];
+  double most = 0.0;    // bonds of one atom
+  for (int i = 0; i < nlocal; i++) most = MAX(most, fd[i][0]);
+  double mine[2] = {most, rate_max}, all[2];
   MPI_Allreduce(mine, all, 2, MPI_DOUBLE, MPI_MAX, world);
   const double product = all[1] * all[0] * update->dt;
   if (product > 1.0 && comm->me == 0)

@@ -43,11 +43,17 @@ namespace ClusterDyn {
     int maxfd;
     double removed;          // energy removed by this proc's kicks
     double power_full;       // sum of fd . v at the last full step (trapezoid rule)
-    class NeighList *list;
+    class NeighList *list;   // our own, without link L
+    class PairState *state;  // the pair style's link state (link L): damp the linked pairs
+    struct Bonds {
+      const class NeighList *list;
+      int *const *words;     // link L: the pair states of list's pairs; else null
+    };
+    Bonds current_bonds() const;
 
     void clear_fd();
     double compute_forces(int vflag);    // returns the power sum of my atoms
-    template <int NORMAL, int DPD, int GENERAL> void damp();
+    template <int NORMAL, int DPD, int GENERAL, int LINKED> void damp(const Bonds &bonds);
     double rate(const TypePair &tp, double mij) const;    // G_ij (1/time)
     double friction(const TypePair &tp, double mi, double mj) const;    // m_ij G_ij / ftm2v
     double power() const;    // sum over my atoms of fd . v

@@ -98,16 +98,20 @@ namespace ClusterDyn {
     c.kappa = kappa[i][j];
     Law::setup(c);
 
-    // the law must stay finite under deep compression, down to half the equilibrium
-    // distance (exponents such as Mie n = 1e6 overflow double precision right below a)
+    // the kappa-modified law must stay finite under deep compression, down to half the
+    // equilibrium distance (Mie n = 1e6 overflows right below a; Morse and harmonic with a
+    // large kappa alpha a at r = a/2); a singular law is checked where its base is at a/2
     {
       double d[4];
-      Law::derivs(c, 0.5 * c.a, d);
+      const double r = Law::singular ? c.a - 0.5 * c.a / c.kappa : 0.5 * c.a;
+      kappa_derivs<Law>(c, r, d);
       for (int k = 0; k < 4; k++)
         if (!std::isfinite(d[k]))
-          error->all(FLERR, "Pair {}: law of types {} {} overflows at r = a/2 ({}): '{}' gives "
-                     "derivative {} = {} there", Law::style, i, j, Law::overflow_hint,
-                     Law::args(c), k, d[k]);
+          error->all(FLERR, "Pair {}: law of types {} {}{} overflows at r = {} ({}): '{}' gives "
+                     "derivative {} = {} there", Law::style, i, j,
+                     c.kappa == 1.0 ? "" : fmt::format(" with kappa {}", c.kappa),
+                     c.kappa == 1.0 ? "a/2" : fmt::format("{:.6g} a", r / c.a),
+                     Law::overflow_hint, Law::args(c), k, d[k]);
     }
 
     // inflection point b and bond strength f* of the kappa-modified base

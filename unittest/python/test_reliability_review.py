@@ -1,0 +1,134 @@
+"""The rest of the reliability review (issue 25): crashes, non-finite output, wrong results,
+silently accepted and unclear input, one test each, table-driven where the case is an input
+and its clear error.  Oracles: closed forms (free flight: no force, no damping), the same
+scene without the keyword, LAMMPS's own errors."""
+import re
+
+import numpy as np
+import pytest
+from conftest import PLUGIN, run_lmp, session
+
+
+def results(out):
+    return {m.group(1): float(m.group(2)) for m in re.finditer(r"^RESULT (\S+) (\S+)$", out, re.M)}
+
+
+# 1. fix descent/normalized: a restart written with inertia, read by a fix without it
+
+@pytest.mark.parametrize("nprocs", [1, 2])
+@pytest.mark.parametrize("first,second", [("inertia 3 0.5", ""), ("", "inertia 3 0.5"),
+                                          ("inertia 3 0.5", "inertia 5 0.5")])
+def test_descent_restart_read_by_a_fix_with_other_inertia(tmp_path, nprocs, first, second):
+    setup = f"""plugin load {PLUGIN}
+units lj
+atom_modify map array
+lattice fcc 1.41421356
+region box block 0 3 0 3 0 3
+create_box 1 box
+create_atoms 1 box
+mass 1 1.0
+displace_atoms all random 0.05 0.05 0.05 4711 units box
+pair_style morse/spline cut 1.3
+pair_coeff * * 1.0 6.0 1.0
+neighbor 0.3 bin
+"""
+    run_lmp(tmp_path, setup + f"fix d all descent/normalized h 0.002 {first}\nrun 20\n"
+            "write_restart d.restart\n", nprocs)
+    out = run_lmp(tmp_path, f"plugin load {PLUGIN}\nread_restart d.restart\nneighbor 0.3 bin\n"
+                  f"fix d all descent/normalized h 0.002 {second}\nrun 20\n"
+                  'print "RESULT pe $(pe)"\n', nprocs, name="in.b")
+    assert np.isfinite(results(out)["pe"])
+
+
+# 2-4, 9: bad input is a clear error naming the argument (the host survives each)
+
+BAD = [
+    ("fix d all descent/normalized h 0.1 inertia 2147483647 0.5",
+     "inertia M must be an integer <= 1000 \\(got 2147483647\\)"),
+    ("fix d all descent/normalized h 0.1 inertia 1e8 0.5", "inertia M must be an integer <= 1000"),
+    ("fix d all descent/normalized h 0.1 inertia 2.5 0.5", "inertia M must be an integer"),
+    ("pair_style morse/spline cut 1.3\npair_coeff * * 1.0 6.75 1.0 kappa 1e300",
+     "law of types 1 1 with kappa 1e\\+300 overflows at r = 0.5 a"),
+    ("pair_style harmonic/spline cut 1.3\npair_coeff * * 1.0 6.75 1.0 kappa 1e300",
+     "law of types 1 1 with kappa 1e\\+300 overflows"),
+    ("pair_style morse/spline cut 1.3\npair_coeff * * 1.0 6.75 1.0 kappa 200",
+     "law of types 1 1 with kappa 200 overflows at r = 0.5 a \\(alpha a must"),
+    ("pair_style lj/spline cut 1.3\npair_coeff * * 1.0 1.0 kappa 1e300",
+     "with kappa 1e\\+300 overflows"),
+    ("compute d all dust foo", "unknown keyword 'foo'"),
+]
+
+
+@pytest.mark.parametrize("commands,message", BAD)
+def test_bad_input_is_a_clear_error(commands, message):
+    with session() as lmp:
+        lmp.commands_list(["units lj", "region box block -2 2 -2 2 -2 2", "create_box 1 box",
+                           "mass 1 1.0"])
+        *first, last = commands.split("\n")
+        lmp.commands_list(first)
+        with pytest.raises(Exception, match=message):
+            lmp.command(last)
+        lmp.command("variable alive equal 1")    # the instance still takes commands
+
+
+def test_kappa_within_the_bound_keeps_finite_energies():
+    with session() as lmp:
+        lmp.commands_list(["units lj", "region box block -2 2 -2 2 -2 2", "create_box 1 box",
+                           "mass 1 1.0", "create_atoms 1 single 0 0 0",
+                           "create_atoms 1 single 0.5 0 0", "pair_style morse/spline cut 1.3",
+                           "pair_coeff * * 1.0 6.75 1.0 kappa 100", "run 0"])
+        assert np.isfinite(lmp.get_thermo("pe")) and lmp.get_thermo("pe") > 0
+
+
+def test_descent_with_inertia_and_timestep_0_is_an_error():
+    with session() as lmp:
+        lmp.commands_list(["units lj", "region box block -2 2 -2 2 -2 2", "create_box 1 box",
+                           "mass 1 1.0", "create_atoms 1 single 0 0 0",
+                           "create_atoms 1 single 1.1 0 0", "pair_style morse/spline cut 1.3",
+                           "pair_coeff * * 1.0 6.0 1.0",
+                           "fix d all descent/normalized h 0.01 inertia 3 0.5", "timestep 0"])
+        with pytest.raises(Exception, match="inertia needs a time step > 0 \\(got 0\\)"):
+            lmp.command("run 1")
+
+
+# 5. fix viscous/relative damps exactly the pairs the pair style holds bonded
+
+def dimer_ke(style, r, v, steps=40, damp="gamma 5.0"):
+    """ke after `steps` of two atoms r apart moving with -v and +v along their axis."""
+    with session() as lmp:
+        lmp.commands_list(["units lj", "region box block -5 5 -5 5 -5 5", "create_box 1 box",
+                           "mass 1 1.0", "create_atoms 1 single 0 0 0",
+                           f"create_atoms 1 single {r} 0 0", f"pair_style {style}",
+                           "pair_coeff * * 1.0 6.0 1.0", "neighbor 0.3 bin",
+                           "velocity all set 0 0 0", f"group one id 1", "group two id 2",
+                           f"velocity one set {-v} 0 0", f"velocity two set {v} 0 0",
+                           "fix 1 all nve", f"fix 2 all viscous/relative {damp}",
+                           "timestep 0.001", "thermo_modify norm no", "run 0"])
+        ke0 = lmp.get_thermo("ke")
+        lmp.command(f"run {steps}")
+        return ke0, lmp.get_thermo("ke"), lmp.get_thermo("pe")
+
+
+def test_viscous_relative_leaves_unlinked_pairs_alone():
+    # 1.2 a apart: beyond L a = 1.05 a (never linked), inside Rc a = 1.3 a; moving apart
+    ke0, ke, pe = dimer_ke("morse/spline cut 1.3 link 1.05", 1.2, 0.1)
+    assert pe == 0 and ke == ke0    # no force, no damping: free flight
+    ke0_d, ke_d, _ = dimer_ke("morse/spline cut 1.3", 1.2, 0.1)
+    assert ke_d < 0.9 * ke0_d    # by distance the same pair is bonded and damped
+
+
+def test_viscous_relative_damps_linked_pairs_as_distance_bonds():
+    a = dimer_ke("morse/spline cut 1.3 link 1.05", 1.0, 0.05)
+    b = dimer_ke("morse/spline cut 1.3", 1.0, 0.05)
+    assert a[1] < 0.9 * a[0] and a[1] == pytest.approx(b[1], rel=1e-12)
+
+
+def test_viscous_relative_cutoff_does_not_apply_under_link():
+    with session() as lmp:
+        lmp.commands_list(["units lj", "region box block -5 5 -5 5 -5 5", "create_box 1 box",
+                           "mass 1 1.0", "create_atoms 1 single 0 0 0",
+                           "pair_style morse/spline cut 1.3 link 1.05", "pair_coeff * * 1.0 6.0 1.0",
+                           "fix 2 all viscous/relative gamma 1.0 cutoff 1.2"])
+        with pytest.raises(Exception, match="keyword cutoff does not apply under a pair style "
+                                            "with link L"):
+            lmp.command("run 0")
