@@ -25,6 +25,7 @@
 #include "compute_dust.h"
 
 #include "mpi_collectives.h"
+#include "keyword_set.h"
 #include "skin_check.h"
 
 #include "atom.h"
@@ -58,8 +59,10 @@ ComputeDust::ComputeDust(LAMMPS *lmp, int narg, char **arg) :
     state(nullptr), list(nullptr), nmax(0), fragments(nullptr), nrows(0), maxrows(0),
     rows(nullptr), evaluated(-1)
 {
+  KeywordSet given(lmp, "Compute dust");
   for (int iarg = 3; iarg < narg; iarg++) {
     const std::string key = arg[iarg];
+    given.add(key);
     if (key == "links") {    // a flag: the bonds are the pair style's links
       links = 1;
       continue;

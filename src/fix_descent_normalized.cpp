@@ -15,6 +15,8 @@
 
 #include "fix_descent_normalized.h"
 
+#include "keyword_set.h"
+
 #include "atom.h"
 #include "comm.h"
 #include "domain.h"
@@ -42,8 +44,10 @@ FixDescentNormalized::FixDescentNormalized(LAMMPS *lmp, int narg, char **arg) :
     error->all(FLERR, "Fix descent/normalized: h must be > 0 (got {})", arg[4]);
 
   int iarg = 5;
+  KeywordSet given(lmp, "Fix descent/normalized");
   while (iarg < narg) {
     const std::string key = arg[iarg];
+    given.add(key);
     const int nvalues = key == "inertia" ? 2 : 1;
     if (iarg + nvalues >= narg)
       error->all(FLERR, "Fix descent/normalized: keyword {} needs {} value{}", key, nvalues,
@@ -120,6 +124,11 @@ void FixDescentNormalized::init()
     error->all(FLERR, "Fix descent/normalized needs run_style verlet (got {})",
                update->integrate_style);
   check_integrators();
+  const double box = domain->dimension == 2 ? MIN(domain->xprd, domain->yprd)
+                                             : MIN(MIN(domain->xprd, domain->yprd), domain->zprd);
+  if (!(step < box))
+    error->all(FLERR, "Fix descent/normalized: h = {} must be smaller than the box ({})", step,
+               box);
   if (nmemory && !(update->dt > 0.0))
     error->all(FLERR, "Fix descent/normalized: inertia needs a time step > 0 (got {}): the "
                "velocities are the mean displacement / dt", update->dt);

@@ -13,6 +13,7 @@
 #include "memory.h"
 #include "neigh_list.h"
 #include "neighbor.h"
+#include "update.h"
 
 #include <cmath>
 #include <cstring>
@@ -143,35 +144,12 @@ template <class Law> void PairSpline<Law>::coeff(int narg, char **arg)
 
   SplineCoeff in{};
   Law::read(arg + 2, in, lmp);
-  double kappa_one = 1.0, rc_one = 0.0, rs_one = 0.0;
-  for (int iarg = 2 + Law::nargs; iarg < narg; iarg += 2) {
-    const std::string key = arg[iarg];
-    if (key != "kappa" && key != "rc" && key != "rs")
-      error->all(FLERR, "Pair {}: unknown pair_coeff keyword '{}' (expected kappa, rc or rs)",
-                 Law::style, key);
-    if (iarg + 1 >= narg) error->all(FLERR, "Pair {}: pair_coeff keyword {} needs a value",
-                                     Law::style, key);
-    const double value = positive_arg(Law::style, key.c_str(), arg[iarg + 1], lmp);
-    if (key == "kappa") kappa_one = value;
-    else if (key == "rc") {
-      if (setting.tail == WAGNER)
-        error->all(FLERR, "Pair {}: keyword rc does not apply to tail wagner (its cutoff follows "
-                   "from the law)", Law::style);
-      if (!(value > 1.0))
-        error->all(FLERR, "Pair {}: rc must be > 1 in units of a (got {})", Law::style,
-                   arg[iarg + 1]);
-      rc_one = value;
-    } else {
-      if (setting.tail != LAGUNOV)
-        error->all(FLERR, "Pair {}: keyword rs applies only to tail lagunov", Law::style);
-      rs_one = value;
-    }
-  }
-
+  const SplineSettings::PairKeywords k =
+      setting.parse_pair_keywords(lmp, Law::style, narg - 2 - Law::nargs, arg + 2 + Law::nargs);
   int count = 0;
   for (int i = ilo; i <= ihi; i++) {
     for (int j = MAX(jlo, i); j <= jhi; j++) {
-      table.set(i, j, in, kappa_one, rc_one, rs_one);
+      table.set(i, j, in, k.kappa, k.rc, k.rs);
       setflag[i][j] = 1;
       table.derive(i, j, setting, offset_flag, links);    // reject a bad law now, pair named
       count++;
@@ -184,6 +162,8 @@ template <class Law> void PairSpline<Law>::coeff(int narg, char **arg)
 
 template <class Law> void PairSpline<Law>::init_style()
 {
+  if (utils::strmatch(update->integrate_style, "^respa"))
+    error->all(FLERR, "Pair {} is not for run_style respa (use run_style verlet)", Law::style);
   if (links.on()) {
     neighbor->add_request(this, NeighConst::REQ_HISTORY);
     state.init();

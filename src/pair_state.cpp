@@ -16,6 +16,7 @@
 #include "update.h"
 
 #include <algorithm>
+#include <cstring>
 
 using namespace LAMMPS_NS;
 using namespace ClusterDyn;
@@ -59,6 +60,7 @@ void PairState::add_placeholder()
 void PairState::enable()
 {
   if (!enabled) {
+    check_reserved_ids();
     if (modify->get_fix_by_id(FIX_ID) || modify->get_fix_by_id(placeholder()))
       error->all(FLERR, "{}: another pair style already keeps links (fix {}); one linked pair "
                  "style at a time", name, FIX_ID);
@@ -81,8 +83,21 @@ void PairState::enable()
   total = pending = StateTally();
 }
 
+// a fix of the user's with the state's IDs
+void PairState::check_reserved_ids() const
+{
+  for (const std::string &id : {std::string(FIX_ID), placeholder()}) {
+    const Fix *other = modify->get_fix_by_id(id);
+    if (other && other != fix && strcmp(other->style, "DUMMY") != 0 &&
+        strcmp(other->style, "PAIR_STATE") != 0)
+      error->all(FLERR, "{}: fix ID {} is reserved for the link state (fix {} has it): rename "
+                 "that fix", name, id, other->style);
+  }
+}
+
 void PairState::init()
 {
+  check_reserved_ids();
   if (!fix) {
     if (!modify->get_fix_by_id(placeholder()))
       error->all(FLERR, "{}: its link state (fix {}) was deleted: re-issue pair_style to link "

@@ -5,6 +5,8 @@
 
 #include "spline_settings.h"
 
+#include "keyword_set.h"
+
 #include "comm.h"
 
 #include <cstring>
@@ -36,6 +38,9 @@ SplineSettings SplineSettings::parse(LAMMPS *lmp, const char *style, bool has_in
     if (!(s.rc > 1.0))
       error->all(FLERR, "Pair style {} cut: Rc must be > 1 in units of a (got {}): the bond would "
                  "never hold", style, rc);
+    if (!(s.rc <= MAX_RC))
+      error->all(FLERR, "Pair style {} cut: Rc must be <= {} in units of a (got {})", style,
+                 MAX_RC, rc);
   } else if (name == "wagner") {
     if (!has_inflection)
       error->all(FLERR, "Pair style {}: tail wagner needs an inflection point; the harmonic well "
@@ -47,9 +52,9 @@ SplineSettings SplineSettings::parse(LAMMPS *lmp, const char *style, bool has_in
     s.tail = LAGUNOV;
     const char *rc = tail_number("Rc");
     s.rc = positive_arg(style, "lagunov Rc", rc, lmp);
-    if (!(s.rc > 1.0))
-      error->all(FLERR, "Pair style {} lagunov: Rc must be > 1 in units of a (got {}): the bond "
-                 "would never hold", style, rc);
+    if (!(s.rc > 1.0 && s.rc <= MAX_RC))
+      error->all(FLERR, "Pair style {} lagunov: Rc must be > 1 and <= {} in units of a (got {})",
+                 style, MAX_RC, rc);
     if (iarg < narg && strcmp(arg[iarg], "start") == 0) {
       iarg++;
       const char *rs = tail_number("Rs after start");
@@ -65,8 +70,10 @@ SplineSettings SplineSettings::parse(LAMMPS *lmp, const char *style, bool has_in
 
   // keywords after the tail
   int relink_set = -1;
+  KeywordSet given(lmp, fmt::format("Pair style {}", style));
   while (iarg < narg) {
     const std::string key = arg[iarg];
+    given.add(key);
     if (key != "chain" && key != "link" && key != "relink")
       error->all(FLERR, "Pair style {}: unknown keyword '{}' after tail {} (expected chain, link "
                  "or relink{})", style, key, name, name == "lagunov" ? " or start" : "");
@@ -92,6 +99,39 @@ SplineSettings SplineSettings::parse(LAMMPS *lmp, const char *style, bool has_in
                "neighbours by atom ID already)", style);
   s.relink = relink_set > 0;
   return s;
+}
+
+SplineSettings::PairKeywords SplineSettings::parse_pair_keywords(LAMMPS *lmp, const char *style,
+                                                                int narg, char **arg) const
+{
+  Error *error = lmp->error;
+  PairKeywords k;
+  KeywordSet given(lmp, fmt::format("Pair {} pair_coeff", style));
+  for (int iarg = 0; iarg < narg; iarg += 2) {
+    const std::string key = arg[iarg];
+    given.add(key);
+    if (key != "kappa" && key != "rc" && key != "rs")
+      error->all(FLERR, "Pair {}: unknown pair_coeff keyword '{}' (expected kappa, rc or rs)",
+                 style, key);
+    if (iarg + 1 >= narg)
+      error->all(FLERR, "Pair {}: pair_coeff keyword {} needs a value", style, key);
+    const double value = positive_arg(style, key.c_str(), arg[iarg + 1], lmp);
+    if (key == "kappa") k.kappa = value;
+    else if (key == "rc") {
+      if (tail == WAGNER)
+        error->all(FLERR, "Pair {}: keyword rc does not apply to tail wagner (its cutoff follows "
+                   "from the law)", style);
+      if (!(value > 1.0 && value <= MAX_RC))
+        error->all(FLERR, "Pair {}: rc must be > 1 and <= {} in units of a (got {})", style,
+                   MAX_RC, arg[iarg + 1]);
+      k.rc = value;
+    } else {
+      if (tail != LAGUNOV)
+        error->all(FLERR, "Pair {}: keyword rs applies only to tail lagunov", style);
+      k.rs = value;
+    }
+  }
+  return k;
 }
 
 void SplineSettings::write_restart(FILE *fp, int offset_flag, int mix_flag) const

@@ -23,9 +23,16 @@ namespace ClusterDyn {
     double link_l = 0.0;     // link L; 0 = off
     int relink = 0;
     static constexpr int MAX_CHAIN = 1000;
+    static constexpr double MAX_RC = 100.0;    // tail end, units of a
 
     static SplineSettings parse(LAMMPS *lmp, const char *style, bool has_inflection, int narg,
                                 char **arg);
+    // pair_coeff I J <law args> [kappa K] [rc Rc] [rs Rs]: the keywords after the law's
+    // arguments (narg, arg), checked against these settings; rc, rs: 0 = not given
+    struct PairKeywords {
+      double kappa = 1.0, rc = 0.0, rs = 0.0;
+    };
+    PairKeywords parse_pair_keywords(LAMMPS *lmp, const char *style, int narg, char **arg) const;
     // restart files: with the pair style's shift and mix flags between (the file format)
     void write_restart(FILE *fp, int offset_flag, int mix_flag) const;
     void read_restart(FILE *fp, int &offset_flag, int &mix_flag, LAMMPS *lmp);

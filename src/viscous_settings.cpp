@@ -5,6 +5,8 @@
 
 #include "viscous_settings.h"
 
+#include "keyword_set.h"
+
 #include "error.h"
 
 #include <cstring>
@@ -27,7 +29,9 @@ ViscousSettings ViscousSettings::parse(LAMMPS *lmp, int narg, char **arg)
   if (!(s.value > 0.0))
     error->all(FLERR, "Fix viscous/relative: {} must be > 0 (got {})", arg[3], arg[4]);
 
+  KeywordSet given(lmp, "Fix viscous/relative");
   for (int iarg = 5; iarg < narg; iarg += 2) {
+    given.add(arg[iarg]);
     if (iarg + 1 >= narg)
       error->all(FLERR, "Fix viscous/relative: keyword {} needs a value", arg[iarg]);
     const std::string key = arg[iarg], val = arg[iarg + 1];

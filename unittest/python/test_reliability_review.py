@@ -56,6 +56,36 @@ BAD = [
     ("pair_style lj/spline cut 1.3\npair_coeff * * 1.0 1.0 kappa 1e300",
      "with kappa 1e\\+300 overflows"),
     ("compute d all dust foo", "unknown keyword 'foo'"),
+    # 8. a keyword given twice: the last value would win silently
+    ("pair_style morse/spline cut 1.2 link 1.05 link 1.1", "Pair style morse/spline: keyword link given twice"),
+    ("pair_style morse/spline cut 1.2 link 1.05 relink yes relink no", "keyword relink given twice"),
+    ("pair_style morse/spline cut 1.2 chain 2 chain 3", "keyword chain given twice"),
+    ("pair_style morse/spline cut 1.2\npair_coeff * * 1.0 6.0 1.0 kappa 1.1 kappa 1.2",
+     "Pair morse/spline pair_coeff: keyword kappa given twice"),
+    ("compute d all dust rows dust rows all", "Compute dust: keyword rows given twice"),
+    ("compute d all dust links links", "Compute dust: keyword links given twice"),
+    ("fix v all viscous/relative gamma 1.0 mode normal mode full", "keyword mode given twice"),
+    ("fix d all descent/normalized h 0.1 decay 0.5 decay 0.9", "keyword decay given twice"),
+    # 10. the link state's fix IDs are reserved
+    ("fix NEIGH_HISTORY_LINK all nve\npair_style morse/spline cut 1.2 link 1.05",
+     "Pair style morse/spline: fix ID NEIGH_HISTORY_LINK is reserved for the link state"),
+    ("pair_style morse/spline cut 1.2 link 1.05\npair_coeff * * 1.0 6.0 1.0\n"
+     "fix NEIGH_HISTORY_LINK all nve\nrun 0", "fix ID NEIGH_HISTORY_LINK is reserved"),
+    ("fix NEIGH_HISTORY_LINK_DUMMY all nve\npair_style morse/spline cut 1.2 link 1.05",
+     "fix ID NEIGH_HISTORY_LINK_DUMMY is reserved"),
+    # 12. cutoffs and steps that LAMMPS cannot bin or integrate: bounded, named
+    ("pair_style morse/spline cut 1e300", "Pair style morse/spline cut: Rc must be <= 100 in units"),
+    ("pair_style morse/spline lagunov 1e300", "lagunov: Rc must be > 1 and <= 100"),
+    ("pair_style morse/spline cut 1.2\npair_coeff * * 1.0 6.0 1.0 rc 1e300",
+     "rc must be > 1 and <= 100 in units of a \\(got 1e300\\)"),
+    ("pair_style morse/spline cut 1.2\npair_coeff * * 1.0 6.0 1.0\n"
+     "fix d all descent/normalized h 1e308\nrun 1", "h = 1e\\+308 must be smaller than the box"),
+    # 7. the styles that are not for rRESPA refuse it
+    ("pair_style morse/spline cut 1.2\npair_coeff * * 1.0 6.0 1.0\nrun_style respa 2 2\nrun 1",
+     "Pair morse/spline is not for run_style respa"),
+    ("pair_style morse/spline cut 1.2\npair_coeff * * 1.0 6.0 1.0\n"
+     "fix d all descent/normalized h 0.01\nrun_style respa 2 2\nrun 1",
+     "Pair morse/spline is not for run_style respa"),
 ]
 
 
@@ -132,3 +162,23 @@ def test_viscous_relative_cutoff_does_not_apply_under_link():
         with pytest.raises(Exception, match="keyword cutoff does not apply under a pair style "
                                             "with link L"):
             lmp.command("run 0")
+
+
+# 11. replicate with links: LAMMPS's own check refuses every fix with per-atom arrays before
+# any style can speak; doc/pair_spline.rst says what to do (replicate, then link)
+
+def test_replicate_with_links_is_refused_and_replicate_before_linking_works():
+    with session() as lmp:
+        lmp.commands_list(["units lj", "lattice fcc 1.41421356", "region box block 0 2 0 2 0 2",
+                           "create_box 1 box", "create_atoms 1 box", "mass 1 1.0",
+                           "pair_style morse/spline cut 1.2 link 1.05",
+                           "pair_coeff * * 1.0 6.0 1.0", "neighbor 0.2 bin", "run 0"])
+        with pytest.raises(Exception, match="Cannot replicate with fixes that store per-atom"):
+            lmp.command("replicate 2 1 1")
+    with session() as lmp:
+        lmp.commands_list(["units lj", "lattice fcc 1.41421356", "region box block 0 2 0 2 0 2",
+                           "create_box 1 box", "create_atoms 1 box", "mass 1 1.0",
+                           "replicate 2 1 1", "pair_style morse/spline cut 1.2 link 1.05",
+                           "pair_coeff * * 1.0 6.0 1.0", "neighbor 0.2 bin",
+                           "compute l all links/atom", "compute ls all reduce sum c_l", "run 0"])
+        assert lmp.extract_compute("ls", 0, 0) == 12 * 64
