@@ -94,8 +94,9 @@ def test_normal_mode_skips_coincident_atoms_without_nan():
 # 4. fix viscous/relative refuses run_style respa (it could not damp there)
 
 def test_respa_is_refused():
+    # with a stock pair style: the spline styles refuse respa themselves (test_reliability_review)
     with session() as lmp:
-        box(lmp, ["create_atoms 1 single 1.0 1.0 1.0", "pair_style morse/spline cut 1.2",
+        box(lmp, ["create_atoms 1 single 1.0 1.0 1.0", "pair_style morse 1.2",
                   "pair_coeff 1 1 1.0 6.0 1.0", "fix nve all nve",
                   "fix d all viscous/relative gamma 0.5", "run_style respa 2 2"])
         with pytest.raises(Exception, match="does not support run_style respa"):
