@@ -25,6 +25,7 @@
 #include "compute_dust.h"
 
 #include "mpi_collectives.h"
+#include "arg_values.h"
 #include "keyword_set.h"
 #include "skin_check.h"
 
@@ -73,12 +74,11 @@ ComputeDust::ComputeDust(LAMMPS *lmp, int narg, char **arg) :
     if (++iarg >= narg) error->all(FLERR, "Compute dust: keyword {} needs a value", key);
     const std::string value = arg[iarg];
     if (key == "cutoff") {
-      cutoff_user = utils::numeric(FLERR, value, false, lmp);
-      if (!(cutoff_user > 0.0))
-        error->all(FLERR, "Compute dust: cutoff must be > 0 (got {})", value);
+      cutoff_user = positive_arg("Compute dust", "cutoff", value.c_str(), lmp);
     } else if (key == "maxsize") {
-      maxsize = utils::bnumeric(FLERR, value, false, lmp);
-      if (maxsize < 1) error->all(FLERR, "Compute dust: maxsize must be >= 1 (got {})", value);
+      const double m = integer_arg("Compute dust", "maxsize", value.c_str(), lmp);
+      if (m < 1) error->all(FLERR, "Compute dust: maxsize must be >= 1 (got {})", value);
+      maxsize = (bigint) m;
     } else {
       if (value != "all" && value != "dust")
         error->all(FLERR, "Compute dust: rows must be all or dust (got {})", value);

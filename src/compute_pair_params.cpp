@@ -10,9 +10,13 @@
 
 #include "compute_pair_params.h"
 
+#include "arg_values.h"
+#include "keyword_set.h"
+
 #include "law_probe.h"
 
 #include "atom.h"
+#include "domain.h"
 #include "error.h"
 #include "force.h"
 #include "memory.h"
@@ -44,28 +48,32 @@ ComputePairParams::ComputePairParams(LAMMPS *lmp, int narg, char **arg) :
   if (narg < 5)
     error->all(FLERR, "Compute pair/params: expected compute ID group pair/params I J "
                "[mass m] [rc Rc] [lattice chain|tri|fcc] [u u1 u2 ...]");
-  itype = utils::inumeric(FLERR, arg[3], false, lmp);
-  jtype = utils::inumeric(FLERR, arg[4], false, lmp);
+  if (!domain->box_exist)
+    error->all(FLERR, "Compute pair/params: the box must exist (its atom types are I and J)");
+  itype = (int) integer_arg("Compute pair/params", "type I", arg[3], lmp);
+  jtype = (int) integer_arg("Compute pair/params", "type J", arg[4], lmp);
   for (int t : {itype, jtype})
     if (t < 1 || t > atom->ntypes)
       error->all(FLERR, "Compute pair/params: atom type {} is out of range 1-{}", t, atom->ntypes);
+
+  KeywordSet given(lmp, "Compute pair/params");
 
   for (int iarg = 5; iarg < narg;) {
     const std::string key = arg[iarg];
     if (key != "mass" && key != "rc" && key != "lattice" && key != "u")
       error->all(FLERR, "Compute pair/params: unknown keyword '{}' (expected mass, rc, lattice "
                  "or u)", key);
+    given.add(key);
     if (key != "u" && iarg + 1 >= narg)
       error->all(FLERR, "Compute pair/params: keyword {} needs a value", key);
     if (key == "mass") {
-      mass_user = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
-      if (!(mass_user > 0.0))
-        error->all(FLERR, "Compute pair/params: mass must be > 0 (got {})", arg[iarg + 1]);
+      mass_user = positive_arg("Compute pair/params", "mass", arg[iarg + 1], lmp);
       iarg += 2;
     } else if (key == "rc") {
-      rc_user = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
-      if (!(rc_user > 0.0))
-        error->all(FLERR, "Compute pair/params: rc must be > 0 (got {})", arg[iarg + 1]);
+      rc_user = positive_arg("Compute pair/params", "rc", arg[iarg + 1], lmp);
+      if (!(rc_user > 1.0))
+        error->all(FLERR, "Compute pair/params: rc must be > 1 in units of a (got {}): the bond "
+                   "would never hold", arg[iarg + 1]);
       iarg += 2;
     } else if (key == "lattice") {
       const std::string name = arg[iarg + 1];

@@ -15,6 +15,7 @@
 
 #include "fix_descent_normalized.h"
 
+#include "arg_values.h"
 #include "keyword_set.h"
 
 #include "atom.h"
@@ -39,9 +40,7 @@ FixDescentNormalized::FixDescentNormalized(LAMMPS *lmp, int narg, char **arg) :
   if (narg < 5 || strcmp(arg[3], "h") != 0)
     error->all(FLERR, "Fix descent/normalized: expected fix ID group descent/normalized h H "
                "[decay F] [min Hmin] [inertia M K]");
-  step = utils::numeric(FLERR, arg[4], false, lmp);
-  if (!(step > 0.0))
-    error->all(FLERR, "Fix descent/normalized: h must be > 0 (got {})", arg[4]);
+  step = positive_arg("Fix descent/normalized", "h", arg[4], lmp);
 
   int iarg = 5;
   KeywordSet given(lmp, "Fix descent/normalized");
@@ -53,17 +52,17 @@ FixDescentNormalized::FixDescentNormalized(LAMMPS *lmp, int narg, char **arg) :
       error->all(FLERR, "Fix descent/normalized: keyword {} needs {} value{}", key, nvalues,
                  nvalues > 1 ? "s" : "");
     if (key == "decay") {
-      decay = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      decay = number_arg("Fix descent/normalized", "decay F", arg[iarg + 1], lmp);
       if (!(decay > 0.0 && decay <= 1.0))
         error->all(FLERR, "Fix descent/normalized: decay F must be in (0,1] (got {})",
                    arg[iarg + 1]);
     } else if (key == "min") {
-      hmin = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      hmin = number_arg("Fix descent/normalized", "min Hmin", arg[iarg + 1], lmp);
       if (!(hmin >= 0.0 && hmin <= step))
         error->all(FLERR, "Fix descent/normalized: min Hmin must be in [0,h] (got {})",
                    arg[iarg + 1]);
     } else if (key == "inertia") {
-      const double m = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      const double m = number_arg("Fix descent/normalized", "inertia M", arg[iarg + 1], lmp);
       if (!(m >= 1.0))
         error->all(FLERR, "Fix descent/normalized: inertia M must be >= 1 (got {})",
                    arg[iarg + 1]);
@@ -71,7 +70,7 @@ FixDescentNormalized::FixDescentNormalized(LAMMPS *lmp, int narg, char **arg) :
         error->all(FLERR, "Fix descent/normalized: inertia M must be an integer <= {} (got {}): "
                    "the memory holds 3 M values per atom", MAX_MEMORY, arg[iarg + 1]);
       nmemory = (int) m;
-      kinertia = utils::numeric(FLERR, arg[iarg + 2], false, lmp);
+      kinertia = number_arg("Fix descent/normalized", "inertia K", arg[iarg + 2], lmp);
       if (!(kinertia >= 0.0 && kinertia < 1.0))
         error->all(FLERR, "Fix descent/normalized: inertia K must be in [0,1) (got {})",
                    arg[iarg + 2]);

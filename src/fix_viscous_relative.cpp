@@ -338,10 +338,15 @@ void FixViscousRelative::check_stability()
   double mine[2] = {most, rate_max}, all[2];
   MPI_Allreduce(mine, all, 2, MPI_DOUBLE, MPI_MAX, world);
   const double product = all[1] * all[0] * update->dt;
-  if (product > 1.0 && comm->me == 0)
-    error->warning(FLERR, "Fix viscous/relative: G x bonds x dt = {:.3g} x {} x {:.3g} = {:.3g} > 1:"
-                   " the damping is unstable with explicit integration; use a time step below "
-                   "{:.3g}", all[1], (int) all[0], update->dt, product, 1.0 / (all[1] * all[0]));
+  if (product > 1.0) {    // a run diverges (NaN, lost atoms); run 0 is only told
+    const std::string text = fmt::format(
+        "Fix viscous/relative: G x bonds x dt = {:.3g} x {} x {:.3g} = {:.3g} > 1: the damping is "
+        "unstable with explicit integration; use a time step below {:.3g} (or a smaller {})",
+        all[1], (int) all[0], update->dt, product, 1.0 / (all[1] * all[0]),
+        opt.by_j ? "1/J" : "gamma");
+    if (update->nsteps > 0) error->all(FLERR, text);
+    if (comm->me == 0) error->warning(FLERR, text);
+  }
 }
 
 /* ---------------------------------------------------------------------- */

@@ -139,8 +139,9 @@ template <class Law> void PairSpline<Law>::coeff(int narg, char **arg)
   if (!allocated) allocate();
 
   int ilo, ihi, jlo, jhi;
-  utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
-  utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
+  const std::string who = std::string("Pair ") + Law::style + " pair_coeff";
+  type_range(who, "I", arg[0], atom->ntypes, ilo, ihi, lmp);
+  type_range(who, "J", arg[1], atom->ntypes, jlo, jhi, lmp);
 
   SplineCoeff in{};
   Law::read(arg + 2, in, lmp);
@@ -164,6 +165,9 @@ template <class Law> void PairSpline<Law>::init_style()
 {
   if (utils::strmatch(update->integrate_style, "^respa"))
     error->all(FLERR, "Pair {} is not for run_style respa (use run_style verlet)", Law::style);
+  if (tail_flag)
+    error->all(FLERR, "Pair {}: pair_modify tail yes does not apply (the interaction ends at "
+               "the tail's end)", Law::style);
   if (links.on()) {
     neighbor->add_request(this, NeighConst::REQ_HISTORY);
     state.init();

@@ -17,6 +17,7 @@
 #ifndef LMP_CLUSTERDYN_SPLINE_LAWS_H
 #define LMP_CLUSTERDYN_SPLINE_LAWS_H
 
+#include "arg_values.h"
 #include "error.h"
 #include "pointers.h"
 #include "utils.h"
@@ -40,23 +41,14 @@ namespace ClusterDyn {
     double hardsq;                  // r^2 at or below which the law is singular
   };
 
-  // positive numeric argument, with an error naming it
-
-  inline double positive_arg(const char *style, const char *name, const char *str, LAMMPS *lmp)
-  {
-    double value = utils::numeric(FLERR, str, false, lmp);
-    if (!(value > 0.0))
-      lmp->error->all(FLERR, "Pair {}: {} must be > 0 (got {})", style, name, str);
-    return value;
-  }
-
   // "D alpha a": the arguments of the Morse and harmonic laws
 
   inline void read_d_alpha_a(const char *style, char **arg, SplineCoeff &c, LAMMPS *lmp)
   {
-    c.d = positive_arg(style, "D", arg[0], lmp);
-    c.p = positive_arg(style, "alpha", arg[1], lmp);
-    c.a = positive_arg(style, "a", arg[2], lmp);
+    const std::string who = std::string("Pair ") + style;
+    c.d = positive_arg(who, "D", arg[0], lmp);
+    c.p = positive_arg(who, "alpha", arg[1], lmp);
+    c.a = positive_arg(who, "a", arg[2], lmp);
     c.q = 0.0;
   }
 
@@ -158,10 +150,11 @@ namespace ClusterDyn {
 
     static void read(char **arg, SplineCoeff &c, LAMMPS *lmp)
     {
-      c.d = positive_arg(style, "D", arg[0], lmp);
-      c.a = positive_arg(style, "a", arg[1], lmp);
-      c.p = utils::numeric(FLERR, arg[2], false, lmp);
-      c.q = positive_arg(style, "m", arg[3], lmp);
+      const std::string who = std::string("Pair ") + style;
+      c.d = positive_arg(who, "D", arg[0], lmp);
+      c.a = positive_arg(who, "a", arg[1], lmp);
+      c.p = number_arg(who, "n", arg[2], lmp);
+      c.q = positive_arg(who, "m", arg[3], lmp);
       if (!(c.p > c.q)) lmp->error->all(FLERR, "Pair {}: n must be > m (got n = {}, m = {})",
                                         style, arg[2], arg[3]);
     }
@@ -219,8 +212,9 @@ namespace ClusterDyn {
 
     static void read(char **arg, SplineCoeff &c, LAMMPS *lmp)
     {
-      c.d = positive_arg(style, "D", arg[0], lmp);
-      c.a = positive_arg(style, "a", arg[1], lmp);
+      const std::string who = std::string("Pair ") + style;
+      c.d = positive_arg(who, "D", arg[0], lmp);
+      c.a = positive_arg(who, "a", arg[1], lmp);
       c.p = 12.0;
       c.q = 6.0;
     }

@@ -19,6 +19,7 @@ SplineSettings SplineSettings::parse(LAMMPS *lmp, const char *style, bool has_in
                                      int narg, char **arg)
 {
   Error *error = lmp->error;
+  const std::string pair = fmt::format("Pair {}", style);
   SplineSettings s;
   if (narg < 1)
     error->all(FLERR, "Pair style {}: missing tail (cut Rc | wagner | lagunov Rc [start Rs])",
@@ -34,7 +35,7 @@ SplineSettings SplineSettings::parse(LAMMPS *lmp, const char *style, bool has_in
   if (name == "cut") {
     s.tail = CUT;
     const char *rc = tail_number("Rc");
-    s.rc = utils::numeric(FLERR, rc, false, lmp);
+    s.rc = number_arg(pair, "cut Rc", rc, lmp);
     if (!(s.rc > 1.0))
       error->all(FLERR, "Pair style {} cut: Rc must be > 1 in units of a (got {}): the bond would "
                  "never hold", style, rc);
@@ -51,14 +52,17 @@ SplineSettings SplineSettings::parse(LAMMPS *lmp, const char *style, bool has_in
   } else if (name == "lagunov") {
     s.tail = LAGUNOV;
     const char *rc = tail_number("Rc");
-    s.rc = positive_arg(style, "lagunov Rc", rc, lmp);
+    s.rc = positive_arg(pair, "lagunov Rc", rc, lmp);
     if (!(s.rc > 1.0 && s.rc <= MAX_RC))
       error->all(FLERR, "Pair style {} lagunov: Rc must be > 1 and <= {} in units of a (got {})",
                  style, MAX_RC, rc);
     if (iarg < narg && strcmp(arg[iarg], "start") == 0) {
       iarg++;
       const char *rs = tail_number("Rs after start");
-      s.rs = positive_arg(style, "lagunov start Rs", rs, lmp);
+      s.rs = positive_arg(pair, "lagunov start Rs", rs, lmp);
+      if (!(s.rs >= 1.0))
+        error->all(FLERR, "Pair style {} lagunov: start Rs must be >= 1 in units of a (got {}): "
+                   "a smoothing from inside a would move the equilibrium", style, rs);
       if (!(s.rc > s.rs))
         error->all(FLERR, "Pair style {} lagunov: Rc = {} must be > start Rs = {}", style, rc, rs);
     } else if (!has_inflection)
@@ -74,17 +78,21 @@ SplineSettings SplineSettings::parse(LAMMPS *lmp, const char *style, bool has_in
   while (iarg < narg) {
     const std::string key = arg[iarg];
     given.add(key);
+    if (key == "start")
+      error->all(FLERR, "Pair style {}: start Rs must come right after lagunov Rc, once", style);
     if (key != "chain" && key != "link" && key != "relink")
       error->all(FLERR, "Pair style {}: unknown keyword '{}' after tail {} (expected chain, link "
                  "or relink{})", style, key, name, name == "lagunov" ? " or start" : "");
     if (iarg + 1 >= narg) error->all(FLERR, "Pair style {}: keyword {} needs a value", style, key);
     if (key == "chain") {
-      s.chain_n = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
-      if (s.chain_n < 1 || s.chain_n > MAX_CHAIN)
+      const double n = integer_arg(fmt::format("Pair style {}", style), "chain N", arg[iarg + 1],
+                                   lmp);
+      if (n < 1 || n > MAX_CHAIN)
         error->all(FLERR, "Pair style {}: chain N must be between 1 and {} (got {})", style,
                    MAX_CHAIN, arg[iarg + 1]);
+      s.chain_n = (int) n;
     } else if (key == "link") {
-      s.link_l = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      s.link_l = number_arg(fmt::format("Pair style {}", style), "link L", arg[iarg + 1], lmp);
       if (!(s.link_l >= 1.0))
         error->all(FLERR, "Pair style {}: link L must be >= 1 in units of a (got {}): pairs "
                    "closer than L a are linked", style, arg[iarg + 1]);
@@ -115,7 +123,8 @@ SplineSettings::PairKeywords SplineSettings::parse_pair_keywords(LAMMPS *lmp, co
                  style, key);
     if (iarg + 1 >= narg)
       error->all(FLERR, "Pair {}: pair_coeff keyword {} needs a value", style, key);
-    const double value = positive_arg(style, key.c_str(), arg[iarg + 1], lmp);
+    const double value = positive_arg(fmt::format("Pair {}", style), key.c_str(), arg[iarg + 1],
+                                      lmp);
     if (key == "kappa") k.kappa = value;
     else if (key == "rc") {
       if (tail == WAGNER)
@@ -128,6 +137,9 @@ SplineSettings::PairKeywords SplineSettings::parse_pair_keywords(LAMMPS *lmp, co
     } else {
       if (tail != LAGUNOV)
         error->all(FLERR, "Pair {}: keyword rs applies only to tail lagunov", style);
+      if (!(value >= 1.0))
+        error->all(FLERR, "Pair {}: rs must be >= 1 in units of a (got {}): a smoothing from "
+                   "inside a would move the equilibrium", style, arg[iarg + 1]);
       k.rs = value;
     }
   }

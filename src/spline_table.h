@@ -96,6 +96,13 @@ namespace ClusterDyn {
     c.p = p0[i][j];
     c.q = q0[i][j];
     c.kappa = kappa[i][j];
+    // pair_coeff checked these; fix adapt may change them
+    const bool two = Law::q_name != nullptr;
+    if (!(c.d > 0.0 && c.a > 0.0 && c.kappa > 0.0 && (Law::p_name == nullptr || c.p > 0.0) &&
+          (!two || (c.q > 0.0 && c.p > c.q))))
+      error->all(FLERR, "Pair {}: types {} {} need D, a, kappa > 0{} (got D = {}, a = {}, kappa = "
+                 "{}, {})", Law::style, i, j, two ? ", n > m > 0" : Law::p_name ? ", alpha > 0" : "",
+                 c.d, c.a, c.kappa, Law::args(c));
     Law::setup(c);
 
     // the kappa-modified law must stay finite under deep compression, down to half the

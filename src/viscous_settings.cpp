@@ -5,6 +5,7 @@
 
 #include "viscous_settings.h"
 
+#include "arg_values.h"
 #include "keyword_set.h"
 
 #include "error.h"
@@ -25,16 +26,18 @@ ViscousSettings ViscousSettings::parse(LAMMPS *lmp, int narg, char **arg)
   if (strcmp(arg[3], "gamma") == 0) s.by_j = 0;
   else if (strcmp(arg[3], "J") == 0) s.by_j = 1;
   else error->all(FLERR, "Fix viscous/relative: unknown style '{}' (expected gamma or J)", arg[3]);
-  s.value = utils::numeric(FLERR, arg[4], false, lmp);
-  if (!(s.value > 0.0))
-    error->all(FLERR, "Fix viscous/relative: {} must be > 0 (got {})", arg[3], arg[4]);
+  s.value = positive_arg("Fix viscous/relative", arg[3], arg[4], lmp);
 
   KeywordSet given(lmp, "Fix viscous/relative");
   for (int iarg = 5; iarg < narg; iarg += 2) {
-    given.add(arg[iarg]);
+    const std::string key = arg[iarg];
+    if (key != "mode" && key != "weight" && key != "cutoff")
+      error->all(FLERR, "Fix viscous/relative: unknown keyword '{}' (expected mode, weight or "
+                 "cutoff)", key);
+    given.add(key);
     if (iarg + 1 >= narg)
-      error->all(FLERR, "Fix viscous/relative: keyword {} needs a value", arg[iarg]);
-    const std::string key = arg[iarg], val = arg[iarg + 1];
+      error->all(FLERR, "Fix viscous/relative: keyword {} needs a value", key);
+    const std::string val = arg[iarg + 1];
     if (key == "mode") {
       if (val == "full") s.normal = 0;
       else if (val == "normal") s.normal = 1;
@@ -44,12 +47,8 @@ ViscousSettings ViscousSettings::parse(LAMMPS *lmp, int narg, char **arg)
       else if (val == "dpd") s.dpd = 1;
       else error->all(FLERR, "Fix viscous/relative: unknown weight '{}' (expected none or dpd)", val);
     } else if (key == "cutoff") {
-      s.cutoff = utils::numeric(FLERR, val, false, lmp);
-      if (!(s.cutoff > 0.0))
-        error->all(FLERR, "Fix viscous/relative: cutoff must be > 0 (got {})", val);
-    } else
-      error->all(FLERR, "Fix viscous/relative: unknown keyword '{}' (expected mode, weight or "
-                 "cutoff)", key);
+      s.cutoff = positive_arg("Fix viscous/relative", "cutoff", val.c_str(), lmp);
+    }
   }
   return s;
 }
