@@ -208,7 +208,7 @@ namespace ClusterDyn {
     static constexpr bool singular = true;
     static constexpr bool has_inflection = true;
     static constexpr const char *wide_well_hint = "raise kappa";
-    static constexpr const char *overflow_hint = "D is too large for double precision";
+    static constexpr const char *overflow_hint = "D / a^3 is beyond double precision";
 
     static void read(char **arg, SplineCoeff &c, LAMMPS *lmp)
     {

@@ -96,8 +96,12 @@ SplineSettings SplineSettings::parse(LAMMPS *lmp, const char *style, bool has_in
       if (!(s.link_l >= 1.0))
         error->all(FLERR, "Pair style {}: link L must be >= 1 in units of a (got {}): pairs "
                    "closer than L a are linked", style, arg[iarg + 1]);
-    } else
-      relink_set = utils::logical(FLERR, arg[iarg + 1], false, lmp);
+    } else {
+      const std::string yes_no = arg[iarg + 1];
+      if (yes_no != "yes" && yes_no != "no")
+        error->all(FLERR, "Pair style {}: relink must be yes or no (got '{}')", style, yes_no);
+      relink_set = yes_no == "yes";
+    }
     iarg += 2;
   }
   if (relink_set >= 0 && s.link_l == 0.0)

@@ -290,7 +290,7 @@ BAD = [
     ("pair_style morse/spline cut 1.2 link 0.9", "link L must be >= 1 in units of a \\(got 0.9\\)"),
     ("pair_style morse/spline cut 1.2 link", "keyword link needs a value"),
     ("pair_style morse/spline cut 1.2 relink yes", "relink needs link L"),
-    ("pair_style morse/spline cut 1.2 link 1.05 relink maybe", "Expected boolean"),
+    ("pair_style morse/spline cut 1.2 link 1.05 relink maybe", "relink must be yes or no \\(got 'maybe'\\)"),
     ("pair_style morse/spline cut 1.2 chain 2 link 1.05", "link and chain N do not combine"),
     ("pair_style morse/spline cut 1.2 link 1.3\npair_coeff * * 1.0 6.0 1.0",
      "link L = 1.3 is beyond the tail end of types 1 1 \\(1.2 a\\)"),

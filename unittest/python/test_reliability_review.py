@@ -182,3 +182,29 @@ def test_replicate_with_links_is_refused_and_replicate_before_linking_works():
                            "pair_coeff * * 1.0 6.0 1.0", "neighbor 0.2 bin",
                            "compute l all links/atom", "compute ls all reduce sum c_l", "run 0"])
         assert lmp.extract_compute("ls", 0, 0) == 12 * 64
+
+
+# 6. dump local with a wildcard: LAMMPS expands c_ID[*] of a compute that has per-atom and
+# local outputs to its per-atom columns (3); the doc says to name the 10 local columns
+
+def test_dump_local_names_the_ten_local_columns(tmp_path):
+    cols = " ".join(f"c_d[{k}]" for k in range(1, 11))
+    script = f"""plugin load {PLUGIN}
+units lj
+lattice fcc 1.41421356
+region box block 0 3 0 3 0 3
+create_box 1 box
+create_atoms 1 box
+mass 1 1.0
+pair_style morse/spline cut 1.2
+pair_coeff * * 1.0 6.0 1.0
+compute d all dust
+dump rows all local 1 rows.txt {cols}
+dump wild all local 1 wild.txt c_d[*]
+run 0
+"""
+    run_lmp(tmp_path, script)
+    rows = np.loadtxt(tmp_path / "rows.txt", skiprows=9, ndmin=2)
+    wild = np.loadtxt(tmp_path / "wild.txt", skiprows=9, ndmin=2)
+    assert rows.shape == (1, 10) and rows[0, 1] == 108    # one fragment of all 108 atoms
+    assert wild.shape == (1, 3)    # LAMMPS's expansion, documented
