@@ -17,6 +17,7 @@ PLUGIN = os.environ["CLUSTERDYN_PLUGIN"]
 LMP = os.environ["CLUSTERDYN_LMP"]
 PAIR_STYLES = [s + v for s in ("morse/spline", "lj/spline", "mie/spline", "harmonic/spline")
                for v in ("", "/omp")]
+ALL_PAIR_STYLES = PAIR_STYLES + ["mca"]
 FIX_STYLES = ["viscous/relative", "descent/normalized"]
 COMPUTE_STYLES = ["dust", "links/atom", "pair/params", "mca/atom"]
 
@@ -26,7 +27,7 @@ def load_plugin(lmp, path=PLUGIN):
     if not os.path.isfile(path):
         raise FileNotFoundError(f"plugin file {path} does not exist")
     lmp.command(f"plugin load {path}")
-    missing = [("pair", s) for s in PAIR_STYLES + ["mca"] if not lmp.has_style("pair", s)]
+    missing = [("pair", s) for s in ALL_PAIR_STYLES if not lmp.has_style("pair", s)]
     missing += [("fix", s) for s in FIX_STYLES if not lmp.has_style("fix", s)]
     missing += [("compute", s) for s in COMPUTE_STYLES if not lmp.has_style("compute", s)]
     if missing:

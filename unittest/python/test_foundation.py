@@ -5,7 +5,7 @@ import os
 import re
 
 import pytest
-from conftest import COMPUTE_STYLES, FIX_STYLES, LMP, PAIR_STYLES, PLUGIN, last_thermo, load_plugin, run_lmp, session
+from conftest import ALL_PAIR_STYLES, COMPUTE_STYLES, FIX_STYLES, LMP, PAIR_STYLES, PLUGIN, last_thermo, load_plugin, run_lmp, session
 
 MORSE_BLOCK = """
 units lj
@@ -29,14 +29,14 @@ run 100
 
 def test_lmp_loads_by_path_and_lists_every_style(tmp_path):
     out = run_lmp(tmp_path, f"plugin load {PLUGIN}\nplugin list\n")
-    assert set(re.findall(r"pair style plugin (\S+)", out)) == set(PAIR_STYLES)
+    assert set(re.findall(r"pair style plugin (\S+)", out)) == set(ALL_PAIR_STYLES)
     assert set(re.findall(r"fix style plugin (\S+)", out)) == set(FIX_STYLES)
     assert set(re.findall(r"compute style plugin (\S+)", out)) == set(COMPUTE_STYLES)
 
 
 def test_python_loads_by_path():
     with session() as lmp:
-        for style in PAIR_STYLES:
+        for style in ALL_PAIR_STYLES:
             assert lmp.has_style("pair", style)
         for style in FIX_STYLES:
             assert lmp.has_style("fix", style)
