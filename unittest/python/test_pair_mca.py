@@ -480,3 +480,18 @@ def test_pulse_speeds_fcc(pol):
     """Pulses in an fcc bar travel at sqrt((K + 4G/3)/rho) (x) and sqrt(G/rho) (y) within 2 %."""
     speed, c, _ = pulse.run("fcc", pol, 0.3)
     assert speed == pytest.approx(c, rel=0.02)
+
+
+def test_links_counted_by_the_package_computes():
+    """compute links/atom reads pair mca's link state (the package's pair state): on fcc it
+    equals compute mca/atom's count and LAMMPS's compute coord/atom at the linking distance
+    (the block is disordered by 0.01: a few pairs are beyond it)."""
+    with session() as lmp:
+        lmp.commands_string(HOT_BLOCK.format(newton="on", dt=0.02))
+        lmp.commands_list(["compute mca all mca/atom", "compute links all links/atom",
+                           "compute coord all coord/atom cutoff 1.02", "run 0"])
+        mca = per_atom(lmp)[:, 8]
+        n = lmp.extract_global("nlocal")
+        links = np.array(lmp.numpy.extract_compute("links", LMP_STYLE_ATOM, 1)[:n])
+        coord = np.array(lmp.numpy.extract_compute("coord", LMP_STYLE_ATOM, 1)[:n])
+    assert np.array_equal(mca, links) and np.array_equal(links, coord) and links.mean() > 11.5
