@@ -49,12 +49,17 @@ void ComputeMcaAtom::compute_peratom()
     memory->create(values, nmax, NCOLUMNS, "mca/atom:values");
     array_atom = values;
   }
+  pair = dynamic_cast<PairMCA *>(force->pair);    // the pair style may have changed since init
+  if (!pair) error->all(FLERR, "Compute mca/atom needs pair_style mca");
   double **s = pair->element_stress();
+  if (!s)
+    error->all(FLERR, "Compute mca/atom: the element stresses are not current (atoms added or "
+               "removed, or no force evaluation since this compute was defined): run 0 first");
   const int *mask = atom->mask;
   for (int i = 0; i < atom->nlocal; i++) {
     double *v = values[i];
     for (int k = 0; k < NCOLUMNS; k++) v[k] = 0.0;
-    if (!(mask[i] & groupbit) || !s) continue;
+    if (!(mask[i] & groupbit)) continue;
     for (int k = 0; k < 6; k++) v[k] = s[i][k];
     v[MEAN] = (v[SXX] + v[SYY] + v[SZZ]) / 3.0;
     const double dxx = v[SXX] - v[MEAN], dyy = v[SYY] - v[MEAN], dzz = v[SZZ] - v[MEAN];

@@ -110,6 +110,14 @@ void FixPairState::post_neighbor()
   check_lost_links();
 }
 
+void FixPairState::forget()
+{
+  for (int i = 0; i < atom->nlocal; i++) {
+    npartner[i] = 0;
+    saved_id[i] = 0;
+  }
+}
+
 const tagint *FixPairState::forward_saved_ids()
 {
   comm->forward_comm(this);

@@ -63,6 +63,7 @@ namespace ClusterDyn {
     PairState *owner;           // settles tentative changes; names the style in errors
     const tagint *forward_saved_ids();    // saved IDs of my atoms and ghosts (0 = fresh)
     bigint count_saved_links();           // links in the atoms' partner arrays, all processors
+    void forget();                        // every atom fresh, no partner (a re-issued style)
 
    private:
     tagint *saved_id;           // per atom: its ID when its partners were saved; 0 = fresh

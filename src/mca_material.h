@@ -50,6 +50,10 @@ namespace ClusterDyn {
       const bool kg = k > 0.0 || g > 0.0, enu = e > 0.0 || nu < 2.0;
       if (kg == enu || (kg && (k < 0.0 || g < 0.0)) || (enu && (e < 0.0 || nu > 1.0)))
         lmp->error->all(FLERR, "{}: give bulk K shear G, or young E poisson nu", who);
+      for (const double v : {k, g, e})
+        if (v > 0.0 && !(v >= 1.0e-100 && v <= 1.0e100))
+          lmp->error->all(FLERR, "{}: a modulus of {} is outside the range 1e-100 to 1e100 that "
+                          "the force kernel takes (pressure units of the unit style)", who, v);
       McaMaterial m;
       m.bulk = kg ? k : e / (3.0 * (1.0 - 2.0 * nu));
       m.shear = kg ? g : e / (2.0 * (1.0 + nu));

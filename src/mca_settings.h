@@ -49,8 +49,12 @@ namespace ClusterDyn {
           s.tolerance = number_arg(who, "tolerance", val, lmp);
           if (!(s.tolerance >= 0.0 && s.tolerance < 1.0))
             lmp->error->all(FLERR, "{}: tolerance must be in [0, 1) (got {})", who, val);
-        } else
-          s.manybody = utils::logical(FLERR, val, false, lmp);
+        } else {
+          const std::string v = val;
+          if (v != "yes" && v != "no")
+            lmp->error->all(FLERR, "{}: manybody must be yes or no (got '{}')", who, v);
+          s.manybody = v == "yes";
+        }
       }
       if (s.fraction == 0.0)
         lmp->error->all(FLERR, "{}: fraction F is required (the packing fraction of the elements: "

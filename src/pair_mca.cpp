@@ -20,7 +20,9 @@
 #include "domain.h"
 #include "error.h"
 #include "force.h"
+#include "fix.h"
 #include "memory.h"
+#include "modify.h"
 #include "neigh_list.h"
 #include "neighbor.h"
 #include "update.h"
@@ -35,7 +37,8 @@ using C = McaContact;
 
 PairMCA::PairMCA(LAMMPS *lmp) :
     Pair(lmp), state(lmp, this, "Pair mca", C::NVALUES), zcount(nullptr), theta(nullptr),
-    stress(nullptr), nmax(0), stress_wanted(0), comm_what(COMM_THETA)
+    stress(nullptr), nmax(0), stress_wanted(0), stress_nlocal(-1), stress_step(-1),
+    comm_what(COMM_THETA)
 {
   single_enable = 0;
   restartinfo = 1;
@@ -100,7 +103,9 @@ void PairMCA::compute(int eflag, int vflag)
   ev_init(eflag, vflag);
   const StatePass pass = state.begin();
   grow(atom->nlocal + atom->nghost);
+  if (neighbor->ago == 0) check_reach();
   if (pass.fresh) make_links(pass);
+  if (update->setupflag && update->whichflag == 1) check_time_step();
   if (setting.manybody) volumetric_strain(pass);
   pair_forces(pass);
   if (setting.manybody && eflag) manybody_energy();
@@ -123,6 +128,7 @@ void PairMCA::make_links(const StatePass &pass)
   const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
   const int newton = force->newton_pair;
   const double reach = 1.0 + setting.tolerance;
+  double deep = 0.0;    // pairs linked closer than half their contact distance
   for (int i = 0; i < nall; i++) zcount[i] = 0.0;
 
   for (int ii = 0; ii < list->inum; ii++) {
@@ -137,6 +143,7 @@ void PairMCA::make_links(const StatePass &pass)
         const double r = sqrt(C::dot(d, d));
         if (r == 0.0) coincident(i, j);
         word = r < reach * (radius[i] + radius[j]) ? 1 : 0;
+        if (r < 0.5 * (radius[i] + radius[j])) deep += newton || j < nlocal ? 1.0 : 0.5;
         for (int k = 0; k < C::NVALUES; k++) v[k] = 0.0;
         v[C::REF] = r;
         for (int k = 0; k < 3; k++) v[C::DPREV + k] = d[k];
@@ -147,6 +154,12 @@ void PairMCA::make_links(const StatePass &pass)
       }
     }
   }
+  double deep_all;
+  MPI_Allreduce(&deep, &deep_all, 1, MPI_DOUBLE, MPI_SUM, world);
+  if (deep_all > 0.0 && comm->me == 0)
+    error->warning(FLERR, "Pair mca: {:.0f} pairs linked closer than half their contact distance "
+                   "R_i + R_j (overlapping elements): they are linked stress free where they are",
+                   deep_all);
   comm_what = COMM_ZCOUNT;
   if (newton) comm->reverse_comm(this);
   comm->forward_comm(this);
@@ -221,7 +234,8 @@ void PairMCA::pair_forces(const StatePass &pass)
   const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
   const int newton = force->newton_pair;
   const int manybody = setting.manybody;
-  const int moving = !update->setupflag;    // a setup re-evaluates the same positions
+  // a setup re-evaluates the same positions; a minimizer does not turn the elements
+  const int moving = !update->setupflag && update->whichflag == 1;
   const double dt = update->dt;
   if (stress_wanted)
     for (int i = 0; i < nall; i++)
@@ -301,7 +315,7 @@ void PairMCA::pair_forces(const StatePass &pass)
           torque[j][k] += qj * ti[k];
         }
       }
-      if (evflag) ev_tally_xyz(i, j, nlocal, newton, evdwl, 0.0, -fi[0], -fi[1], -fi[2], -d[0],
+      if (evflag) ev_tally_xyz(i, j, nlocal, newton, evdwl, 0.0, fi[0], fi[1], fi[2], -d[0],
                                -d[1], -d[2]);
       if (stress_wanted) {
         const double sym[6] = {n[0] * fi[0], n[1] * fi[1], n[2] * fi[2],
@@ -319,6 +333,8 @@ void PairMCA::pair_forces(const StatePass &pass)
   }
 
   if (stress_wanted) {
+    stress_step = update->ntimestep;
+    stress_nlocal = nlocal;
     comm_what = COMM_STRESS;
     if (newton) comm->reverse_comm(this);
     for (int i = 0; i < nlocal; i++) {
@@ -326,6 +342,69 @@ void PairMCA::pair_forces(const StatePass &pass)
       for (int k = 0; k < 6; k++) stress[i][k] *= to_pressure;
     }
   }
+}
+
+/* ----------------------------------------------------------------------
+   at a list build: the box holds each partner once (a periodic width
+   above twice the list's reach: two images of one partner would share one
+   pair state), and no element is larger than the radii the cutoffs were
+   made for (init: the elements present, fix pour and deposit)
+------------------------------------------------------------------------- */
+
+void PairMCA::check_reach()
+{
+  const double reach = neighbor->cutneighmax;
+  const double *h_inv = domain->h_inv;
+  const double width[3] = {
+      domain->triclinic ? 1.0 / sqrt(h_inv[0] * h_inv[0] + h_inv[5] * h_inv[5] +
+                                     h_inv[4] * h_inv[4]) : domain->xprd,
+      domain->triclinic ? 1.0 / sqrt(h_inv[1] * h_inv[1] + h_inv[3] * h_inv[3]) : domain->yprd,
+      domain->triclinic ? 1.0 / h_inv[2] : domain->zprd};
+  for (int k = 0; k < 3; k++)
+    if (domain->periodicity[k] && width[k] <= 2.0 * reach)
+      error->all(FLERR, "Pair mca: the periodic box is {:.6g} wide along {}, not more than twice "
+                 "the neighbour list's reach {:.6g}: one element would meet another through two "
+                 "images; use a larger box (replicate)", width[k], "xyz"[k], reach);
+
+  const double *radius = atom->radius;
+  const int *type = atom->type;
+  int worst = -1;
+  for (int i = 0; i < atom->nlocal; i++)
+    if (radius[i] > rmax[type[i]] && (worst < 0 || radius[i] > radius[worst])) worst = i;
+  tagint bad = worst < 0 ? 0 : atom->tag[worst];
+  tagint anybad;
+  MPI_Allreduce(&bad, &anybad, 1, MPI_LMP_TAGINT, MPI_MAX, world);
+  if (anybad)
+    error->all(FLERR, "Pair mca: element {} is larger than the elements of its type were when "
+               "the run started (the cutoffs are made from them, from fix pour and from fix "
+               "deposit): start a new run after changing sizes", anybad);
+}
+
+/* ----------------------------------------------------------------------
+   a setup: the time step against the time a longitudinal wave takes to
+   cross the smallest element, d sqrt(rho / (K + 4G/3)), rho = m / Omega
+------------------------------------------------------------------------- */
+
+void PairMCA::check_time_step()
+{
+  const double *radius = atom->radius, *rmass = atom->rmass;
+  if (!rmass) return;
+  const int *type = atom->type;
+  double shortest = INFINITY;
+  for (int i = 0; i < atom->nlocal; i++) {
+    const McaMaterial &m = scaled[type[i]];
+    const double rho = rmass[i] / element_volume(i);
+    shortest = MIN(shortest, 2.0 * radius[i] * sqrt(rho / (m.bulk + 4.0 * m.shear / 3.0)));
+  }
+  double all;
+  MPI_Allreduce(&shortest, &all, 1, MPI_DOUBLE, MPI_MIN, world);
+  // velocity Verlet: forces in force units, masses in mass units (ftm2v)
+  const double crossing = all / sqrt(force->ftm2v);
+  if (std::isfinite(crossing) && update->dt > 0.2 * crossing && comm->me == 0)
+    error->warning(FLERR, "Pair mca: timestep {:.6g} is more than 0.2 of the time {:.6g} a "
+                   "longitudinal wave takes to cross the smallest element: expect energy "
+                   "errors above 1e-2 or instability (doc: dt <= 0.1 of it)", update->dt,
+                   crossing);
 }
 
 void PairMCA::manybody_energy()
@@ -423,6 +502,13 @@ void PairMCA::init_style()
       bad = atom->tag[i];
     }
   }
+  for (const char *style : {"^pour", "^deposit"})
+    for (Fix *inserting : modify->get_fix_by_style(style))
+      for (int t = 1; t <= atom->ntypes; t++) {
+        int itype = t;
+        const double *r = (const double *) inserting->extract("radius", itype);
+        if (r) mine[t] = MAX(mine[t], *r);
+      }
   MPI_Allreduce(mine.data(), rmax.data(), atom->ntypes + 1, MPI_DOUBLE, MPI_MAX, world);
   tagint anybad;
   MPI_Allreduce(&bad, &anybad, 1, MPI_LMP_TAGINT, MPI_MAX, world);

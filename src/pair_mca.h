@@ -16,10 +16,12 @@ PairStyle(mca,PairMCA);
 #ifndef LMP_CLUSTERDYN_PAIR_MCA_H
 #define LMP_CLUSTERDYN_PAIR_MCA_H
 
+#include "atom.h"
 #include "mca_material.h"
 #include "mca_settings.h"
 #include "pair.h"
 #include "pair_state.h"
+#include "update.h"
 
 #include <vector>
 
@@ -53,7 +55,11 @@ namespace ClusterDyn {
     // xx yy zz xy xz yz) and the count of linked pairs, from the last force evaluation
     enum { STRESS_COLUMNS = 7 };
     void request_element_stress() { stress_wanted = 1; }
-    double **element_stress() const { return stress; }
+    // the element stresses of my atoms, or null unless they belong to the current atoms
+    double **element_stress() const
+    {
+      return stress_step == update->ntimestep && stress_nlocal == atom->nlocal ? stress : nullptr;
+    }
     double element_volume(int i) const;
 
    private:
@@ -65,7 +71,8 @@ namespace ClusterDyn {
     PairState state;
     double *zcount, *theta;               // per atom: linked pairs at a setup; volumetric strain
     double **stress;
-    int nmax, stress_wanted;
+    int nmax, stress_wanted, stress_nlocal;
+    bigint stress_step;
     enum CommWhat { COMM_ZCOUNT, COMM_THETA, COMM_STRESS } comm_what;
 
     void allocate();
@@ -75,6 +82,8 @@ namespace ClusterDyn {
     void volumetric_strain(const StatePass &);
     void pair_forces(const StatePass &);
     void manybody_energy();
+    void check_reach();
+    void check_time_step();
     [[noreturn]] void coincident(int i, int j) const;
   };
 

@@ -29,7 +29,7 @@ static Fix *create_fix_pair_state(LAMMPS *lmp, int narg, char **arg)
 }
 
 PairState::PairState(LAMMPS *lmp, Pair *owner_pair, const std::string &who, int nv) :
-    Pointers(lmp), pair(owner_pair), name(who), nvalues(nv), enabled(0), made_flag(0),
+    Pointers(lmp), pair(owner_pair), name(who), nvalues(nv), enabled(0), made_flag(0), afresh(0),
     fix(nullptr), pending_step(-1), trial_now(0)
 {
 }
@@ -74,6 +74,9 @@ void PairState::enable()
     discarded = fix->count_saved_links();
     modify->delete_fix(FIX_ID);
   }
+  // a fix made later from this placeholder would take the links a restart file left
+  // for its ID: it forgets them (init)
+  if (!fix) afresh = 1;
   fix = nullptr;
   if (!modify->get_fix_by_id(placeholder())) add_placeholder();
   if (made_flag && comm->me == 0)
@@ -108,6 +111,8 @@ void PairState::init()
     modify->fix_map->erase("PAIR_STATE");
     fix->pair = pair;
     fix->owner = this;
+    if (afresh) fix->forget();
+    afresh = 0;
   }
   check_fix();
   consolidate();

@@ -106,6 +106,7 @@ namespace ClusterDyn {
     std::string name;          // the pair style, for messages
     int nvalues;
     int enabled, made_flag;
+    int afresh;                // re-issued before the fix was made: forget restored links
     FixPairState *fix;         // null until the first init
     StateTally total;          // this processor's share since the state was made
     StateTally pending;        // a minimizer's last evaluation, not yet accepted

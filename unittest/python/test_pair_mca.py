@@ -12,7 +12,7 @@ import sys
 
 import numpy as np
 import pytest
-from conftest import PLUGIN, run_lmp, session
+from conftest import PLUGIN, last_thermo, run_lmp, session
 from lammps import LMP_STYLE_ATOM, LMP_STYLE_GLOBAL, LMP_TYPE_ARRAY, LMP_TYPE_VECTOR
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -400,7 +400,7 @@ def test_bad_input(before, coeff, message):
 @pytest.mark.parametrize("args,message", [
     ("", "fraction F is required"), ("fraction 0", "fraction must be > 0"),
     ("fraction 1.5", "must be in (0, 1]"), ("fraction 0.6 tolerance -0.1", "tolerance must be in"),
-    ("fraction 0.6 manybody maybe", "Expected boolean"), ("fraction 0.6 cut 2", "unknown keyword"),
+    ("fraction 0.6 manybody maybe", "manybody must be yes or no"), ("fraction 0.6 cut 2", "unknown keyword"),
     ("fraction 0.6 tolerance", "tolerance needs a value")])
 def test_bad_settings(args, message):
     with session() as lmp:
@@ -495,3 +495,88 @@ def test_links_counted_by_the_package_computes():
         links = np.array(lmp.numpy.extract_compute("links", LMP_STYLE_ATOM, 1)[:n])
         coord = np.array(lmp.numpy.extract_compute("coord", LMP_STYLE_ATOM, 1)[:n])
     assert np.array_equal(mca, links) and np.array_equal(links, coord) and links.mean() > 11.5
+
+
+@pytest.mark.parametrize("newton", ["on", "off"])
+def test_virial_of_pairs_with_and_without_newton(tmp_path, newton):
+    """A uniform compression: the pressure tallied pair by pair (newton off, compute
+    stress/atom) is positive and equals the one from forces (fdotr) and Love's stresses."""
+    out = run_lmp(tmp_path, f"plugin load {PLUGIN}\n" + HOT_BLOCK.format(newton=newton, dt=0.02)
+                  + "velocity all set 0 0 0\nrun 0\n"
+                  "change_box all x scale 0.99 y scale 0.99 z scale 0.99 remap\n"
+                  "compute p all pressure NULL virial\ncompute sa all stress/atom NULL virial\n"
+                  "compute sas all reduce sum c_sa[1] c_sa[2] c_sa[3]\n"
+                  "variable pa equal -(c_sas[1]+c_sas[2]+c_sas[3])/(3*vol)\n"
+                  "thermo_style custom step c_p v_pa\nthermo_modify format float %.15g\nrun 0\n")
+    p, pa = last_thermo(out, ["c_p", "v_pa"])
+    assert p > 0 and pa == pytest.approx(p, rel=1e-9)
+
+
+def test_minimize_ignores_spins():
+    """minimize moves positions only: spins left from a run do not turn the stored stresses
+    (the same minimum with and without them), and a disordered lattice relaxes to 0.3 % of
+    its energy (the elements cannot turn back)."""
+    result = []
+    for spin in ("0 0 1", "0 0 0"):
+        with session() as lmp:
+            lmp.commands_string(HOT_BLOCK.format(newton="on", dt=0.02))
+            lmp.commands_list(["run 0", f"set group all omega {spin}", "velocity all set 0 0 0",
+                               "displace_atoms all random 0.01 0.01 0.01 99 units box", "run 0"])
+            start = lmp.get_thermo("pe")
+            lmp.command("minimize 0 1e-12 2000 20000")
+            result.append((start, lmp.get_thermo("pe"), lmp.get_thermo("fnorm")))
+    (start, pe, fnorm), again = result
+    assert again == (start, pe, fnorm)
+    assert fnorm < 1e-8 and pe < 0.01 * start
+
+
+def test_reissued_after_read_restart_links_afresh(tmp_path):
+    """read_restart, then pair_style mca again: the restored links are discarded (the log
+    says so), the pairs linked afresh at their present distances: no stress."""
+    head = f"plugin load {PLUGIN}\n" + HOT_BLOCK.format(newton="on", dt=0.02)
+    run_lmp(tmp_path, head + "run 200\nwrite_restart r.rst\n", name="in.first")
+    out = run_lmp(tmp_path, f"plugin load {PLUGIN}\nread_restart r.rst\ncomm_modify vel yes\n"
+                  "pair_style mca fraction 0.74048 tolerance 0.02\nneighbor 0.2 bin\n"
+                  "thermo_style custom step pe\nthermo_modify format float %.10g\nrun 0\n",
+                  name="in.second")
+    assert last_thermo(out, ["PotEng"])[0] == 0.0
+    assert "linked afresh" in out
+
+
+def test_compute_follows_the_pair_style_and_the_atoms():
+    """compute mca/atom after the pair style changed, or after atoms were added since the last
+    force evaluation: a clear error, not stale values."""
+    with session() as lmp:
+        lmp.commands_string(HOT_BLOCK.format(newton="on", dt=0.02))
+        lmp.commands_list(["compute s all mca/atom", "run 0", "create_atoms 1 single 0.3 0.3 0.3"])
+        with pytest.raises(Exception, match="not current"):
+            lmp.command("write_dump all custom d.txt id c_s[1]")
+    with session() as lmp:
+        lmp.commands_string(HOT_BLOCK.format(newton="on", dt=0.02))
+        lmp.commands_list(["compute s all mca/atom", "run 0", "pair_style zero 1.0",
+                           "pair_coeff * *"])
+        with pytest.raises(Exception, match="needs pair_style mca"):
+            lmp.command("write_dump all custom d.txt id c_s[1]")
+
+
+def test_thin_periodic_box_refused():
+    """A periodic box not wider than twice the list's reach would let one partner be met
+    through two images sharing one pair state: an error naming the width."""
+    with session() as lmp:
+        lmp.commands_list(["units lj", "atom_style sphere", "boundary p p p",
+                           "comm_modify vel yes", f"lattice fcc {math.sqrt(2.0)}",
+                           "region box block 0 4 0 4 0 1", "create_box 1 box",
+                           "create_atoms 1 box", "set group all diameter 1.0",
+                           "pair_style mca fraction 0.74048", "pair_coeff 1 1 bulk 1 shear 1",
+                           "neighbor 0.2 bin"])
+        with pytest.raises(Exception, match="periodic box is 1.41421 wide along z"):
+            lmp.command("run 0")
+
+
+@pytest.mark.parametrize("coeff", ["young 1e300 poisson 0.3", "bulk 1e-300 shear 1"])
+def test_moduli_outside_the_kernel_range(coeff):
+    with session() as lmp:
+        lmp.commands_list(["units lj", "atom_style sphere", "region box block -5 5 -5 5 -5 5",
+                           "create_box 1 box", "pair_style mca fraction 0.6"])
+        with pytest.raises(Exception, match="outside the range 1e-100 to 1e100"):
+            lmp.command(f"pair_coeff 1 1 {coeff}")
