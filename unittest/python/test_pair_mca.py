@@ -327,7 +327,8 @@ def test_write_data_keeps_materials_relinks(tmp_path):
 
 def test_rigid_rotation_keeps_stresses():
     """A strained block turned a quarter of a turn by fix move rotate (positions, velocities
-    and spins): each element's stress is the rotated stress of the start, to 1e-3."""
+    and spins): each element's stress is the rotated stress of the start, to 1e-8 (the
+    turn by the contact's spin is exact for a rigid rotation; measured 3e-11)."""
     with session() as lmp:
         lmp.commands_list([
             "units lj", "atom_style sphere", "boundary f f f", "comm_modify vel yes",
@@ -357,7 +358,7 @@ def test_rigid_rotation_keeps_stresses():
     scale = np.abs(s0).max()
     assert scale > 1e-4
     worst = max(np.abs(rot @ tensor(a) @ rot.T - tensor(b)).max() for a, b in zip(s0, s1))
-    assert worst < 1e-3 * scale, worst / scale
+    assert worst < 1e-8 * scale, worst / scale
 
 
 BAD = [

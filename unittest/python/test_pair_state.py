@@ -373,6 +373,22 @@ print "RESULT cbroken $(c_p2[1])"
         in out
 
 
+@pytest.mark.parametrize("nprocs", [1, 2])
+def test_reissued_after_read_restart_links_afresh(tmp_path, nprocs):
+    """pair_style re-issued after read_restart, before any run: the links the restart file
+    carries are discarded as the log says (the fix made at the next init forgets them), and
+    the pairs are linked afresh at the new L."""
+    hot = "velocity all create 0.5 4711 loop geom\nfix 1 all nve\ntimestep 0.004\n"
+    run_lmp(tmp_path, block() + hot + "run 300\n" + report("a") + "write_restart r.restart\n",
+            nprocs)
+    after = f"plugin load {PLUGIN}\nread_restart r.restart\n" + \
+        BLOCK.split("mass 1 1.0\n")[1].replace("link 1.05", "link 1.02").replace(
+            "cutoff 1.05", "cutoff 1.02") + "run 0\n" + report("b")
+    out = run_lmp(tmp_path, after, nprocs, name="in.b")
+    r = results(out)
+    assert r["bdiff"] == 0 and r["bbroken"] == 0 and "are discarded" in out
+
+
 def test_a_linked_pair_leaving_the_neighbour_list_is_an_error():
     with session() as lmp:
         lmp.command("atom_modify map array")
