@@ -104,6 +104,7 @@ void PairMCA::compute(int eflag, int vflag)
   const StatePass pass = state.begin();
   grow(atom->nlocal + atom->nghost);
   if (neighbor->ago == 0) check_reach();
+  check_sizes();
   if (pass.fresh) make_links(pass);
   if (update->setupflag && update->whichflag == 1) check_time_step();
   if (setting.manybody) volumetric_strain(pass);
@@ -347,8 +348,7 @@ void PairMCA::pair_forces(const StatePass &pass)
 /* ----------------------------------------------------------------------
    at a list build: the box holds each partner once (a periodic width
    above twice the list's reach: two images of one partner would share one
-   pair state), and no element is larger than the radii the cutoffs were
-   made for (init: the elements present, fix pour and deposit)
+   pair state)
 ------------------------------------------------------------------------- */
 
 void PairMCA::check_reach()
@@ -365,19 +365,18 @@ void PairMCA::check_reach()
       error->all(FLERR, "Pair mca: the periodic box is {:.6g} wide along {}, not more than twice "
                  "the neighbour list's reach {:.6g}: one element would meet another through two "
                  "images; use a larger box (replicate)", width[k], "xyz"[k], reach);
+}
 
+// every step: no element larger than the radii the cutoffs were made for (fix adapt)
+void PairMCA::check_sizes()
+{
   const double *radius = atom->radius;
   const int *type = atom->type;
-  int worst = -1;
   for (int i = 0; i < atom->nlocal; i++)
-    if (radius[i] > rmax[type[i]] && (worst < 0 || radius[i] > radius[worst])) worst = i;
-  tagint bad = worst < 0 ? 0 : atom->tag[worst];
-  tagint anybad;
-  MPI_Allreduce(&bad, &anybad, 1, MPI_LMP_TAGINT, MPI_MAX, world);
-  if (anybad)
-    error->all(FLERR, "Pair mca: element {} is larger than the elements of its type were when "
-               "the run started (the cutoffs are made from them, from fix pour and from fix "
-               "deposit): start a new run after changing sizes", anybad);
+    if (radius[i] > rmax[type[i]])
+      error->one(FLERR, "Pair mca: element {} is larger than the elements of its type were when "
+                 "the run started (the cutoffs are made from them, from fix pour and from fix "
+                 "deposit): sizes are fixed during a run", atom->tag[i]);
 }
 
 /* ----------------------------------------------------------------------

@@ -83,6 +83,7 @@ namespace ClusterDyn {
     void pair_forces(const StatePass &);
     void manybody_energy();
     void check_reach();
+    void check_sizes();
     void check_time_step();
     [[noreturn]] void coincident(int i, int j) const;
   };

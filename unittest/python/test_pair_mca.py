@@ -631,3 +631,15 @@ def test_two_materials_mixed_against_hashin_shtrikman(c2):
     assert 0.99 * k_lo < k < k_hi and 0.975 * g_lo < g < g_hi, (k, (k_lo, k_hi), g, (g_lo, g_hi))
     if c2 == 0.7:
         assert k_lo < k and g_lo < g
+
+
+def test_elements_grown_during_a_run_refused():
+    """fix adapt growing diameters beyond the sizes the cutoffs were made for: an error naming
+    the element at the step it happens."""
+    with session() as lmp:
+        lmp.commands_string(HOT_BLOCK.format(newton="on", dt=0.02).replace(
+            "atom_style sphere", "atom_style sphere 1"))    # dynamic diameters
+        lmp.commands_list(["variable d equal 1.0+0.01*step",
+                           "fix grow all adapt 1 atom diameter v_d"])
+        with pytest.raises(Exception, match="is larger than the elements of its type"):
+            lmp.command("run 10")
