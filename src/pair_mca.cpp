@@ -484,10 +484,6 @@ void PairMCA::init_style()
     error->all(FLERR, "Pair mca is not for run_style respa (use run_style verlet)");
   if (tail_flag) error->all(FLERR, "Pair mca: pair_modify tail yes does not apply");
   if (offset_flag) error->all(FLERR, "Pair mca: pair_modify shift yes does not apply");
-  for (int i = 1; i <= atom->ntypes; i++)
-    if (!material_set[i])
-      error->all(FLERR, "Pair mca: no material for atom type {}: give pair_coeff {} {} bulk K "
-                 "shear G (or young E poisson nu)", i, i, i);
 
   // the largest radius per type (cutoffs), and no element without a size
   std::vector<double> mine(atom->ntypes + 1, 0.0);
@@ -520,8 +516,13 @@ void PairMCA::init_style()
   state.init();
 }
 
+// called for every type pair (for the type pairs pair_style hybrid gives this style)
 double PairMCA::init_one(int i, int j)
 {
+  for (const int t : {i, j})
+    if (!material_set[t])
+      error->all(FLERR, "Pair mca: no material for atom type {}: give pair_coeff {} {} bulk K "
+                 "shear G (or young E poisson nu)", t, t, t);
   const double cut = McaSettings::REACH * (1.0 + setting.tolerance) * (rmax[i] + rmax[j]);
   if (i == j && cut > 0.0)
     check_neighbor_skin(lmp, cut, "Pair mca");

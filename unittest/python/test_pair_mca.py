@@ -643,3 +643,23 @@ def test_elements_grown_during_a_run_refused():
                            "fix grow all adapt 1 atom diameter v_d"])
         with pytest.raises(Exception, match="is larger than the elements of its type"):
             lmp.command("run 10")
+
+
+def test_hybrid_with_another_style():
+    """pair_style hybrid: mca for type 1, zero for the rest; materials are needed only for
+    the types hybrid gives mca, and the links are counted through hybrid's extract."""
+    with session() as lmp:
+        lmp.commands_list([
+            "units lj", "atom_style sphere", "comm_modify vel yes",
+            f"lattice fcc {math.sqrt(2.0)}", "region box block 0 4 0 4 0 4", "create_box 2 box",
+            "create_atoms 1 box", "set group all diameter 1.0", "set type 1 type/ratio 2 0.25 5",
+            "pair_style hybrid mca fraction 0.74048 tolerance 0.02 zero 1.5",
+            "pair_coeff 1 1 mca young 1.0 poisson 0.3", "pair_coeff 1 2 zero",
+            "pair_coeff 2 2 zero", "compute mca all mca/atom", "compute l all links/atom",
+            "run 0"])
+        n = lmp.extract_global("nlocal")
+        types = np.array(lmp.numpy.extract_atom("type")[:n])
+        links = np.array(lmp.numpy.extract_compute("l", LMP_STYLE_ATOM, 1)[:n])
+        mca = per_atom(lmp)[:, 8]
+    assert np.array_equal(links, mca) and np.all(links[types == 2] == 0)
+    assert links[types == 1].mean() == pytest.approx(12 * 0.75, rel=0.1)
