@@ -35,7 +35,7 @@ ComputeMcaAtom::~ComputeMcaAtom()
 
 void ComputeMcaAtom::init()
 {
-  pair = dynamic_cast<PairMCA *>(force->pair);
+  pair = dynamic_cast<PairMCA *>(force->pair_match("^mca$", 0, 0));
   if (!pair) error->all(FLERR, "Compute mca/atom needs pair_style mca");
   pair->request_element_stress();
 }
@@ -49,7 +49,7 @@ void ComputeMcaAtom::compute_peratom()
     memory->create(values, nmax, NCOLUMNS, "mca/atom:values");
     array_atom = values;
   }
-  pair = dynamic_cast<PairMCA *>(force->pair);    // the pair style may have changed since init
+  pair = dynamic_cast<PairMCA *>(force->pair_match("^mca$", 0, 0));    // may have changed
   if (!pair) error->all(FLERR, "Compute mca/atom needs pair_style mca");
   double **s = pair->element_stress();
   if (!s)
