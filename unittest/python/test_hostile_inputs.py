@@ -613,6 +613,69 @@ row("params-units-metal", unit_scene("metal", "lj/spline"), [CP + "1 1 lattice f
     PUSE, OK)
 
 
+# ---------------------------------------------------------------- J. pair_style mca, compute mca/atom
+
+def mca_box(style="sphere", units="lj", zlo=-3.0, zhi=3.0):
+    """Two touching elements of diameter 1 (types 1 and 2 exist, both atoms type 1)."""
+    return [f"units {units}", f"atom_style {style}", "atom_modify map array",
+            "comm_modify vel yes", f"region box block -3 3 -3 3 {zlo} {zhi}", "create_box 2 box",
+            "create_atoms 1 single 0 0 0", "create_atoms 1 single 1.0 0 0",
+            "thermo_modify norm no"] + (["set group all diameter 1.0"] if style == "sphere" else [])
+
+
+MCA = mca_box()
+MP = "pair_style mca fraction 0.6"
+MC = "pair_coeff * * young 1.0 poisson 0.3"
+for rid, cmds, expect in [
+    ("mca-no-fraction", "pair_style mca", "fraction F is required"),
+    ("mca-fraction-abc", "pair_style mca fraction abc", r"fraction must be a finite number"),
+    ("mca-fraction-0", "pair_style mca fraction 0", r"fraction must be > 0"),
+    ("mca-fraction-2", "pair_style mca fraction 2", r"must be in \(0, 1\]"),
+    ("mca-fraction-missing", "pair_style mca fraction", "fraction needs a value"),
+    ("mca-tolerance-neg", MP + " tolerance -0.1", r"tolerance must be in \[0, 1\)"),
+    ("mca-tolerance-1", MP + " tolerance 1", r"tolerance must be in \[0, 1\)"),
+    ("mca-manybody-maybe", MP + " manybody maybe", "manybody must be yes or no"),
+    ("mca-keyword-twice", MP + " fraction 0.7", "keyword fraction given twice"),
+    ("mca-unknown-keyword", MP + " cut 2", "unknown keyword 'cut'"),
+    ("mca-coeff-nothing", [MP, "pair_coeff * *"], "give bulk K shear G, or young E poisson nu"),
+    ("mca-coeff-I-ne-J", [MP, "pair_coeff 1 2 bulk 1 shear 1"], "a material belongs"),
+    ("mca-coeff-type-0", [MP, "pair_coeff 0 0 bulk 1 shear 1"], "I must be an atom type"),
+    ("mca-coeff-type-3", [MP, "pair_coeff 3 3 bulk 1 shear 1"], "I must be an atom type"),
+    ("mca-coeff-bulk-abc", [MP, "pair_coeff * * bulk abc shear 1"],
+     "bulk modulus K must be a finite number"),
+    ("mca-coeff-shear-0", [MP, "pair_coeff * * bulk 1 shear 0"], "shear modulus G must be > 0"),
+    ("mca-coeff-young-neg", [MP, "pair_coeff * * young -1 poisson 0.3"],
+     "Young's modulus E must be > 0"),
+    ("mca-coeff-nu-half", [MP, "pair_coeff * * young 1 poisson 0.5"],
+     r"Poisson's ratio nu must lie in \(-1, 0.5\)"),
+    ("mca-coeff-mixed-forms", [MP, "pair_coeff * * bulk 1 poisson 0.3"],
+     "give bulk K shear G, or young E poisson nu"),
+    ("mca-coeff-value-missing", [MP, "pair_coeff * * bulk 1 shear"], "shear needs a value"),
+    ("mca-coeff-huge", [MP, "pair_coeff * * young 1e300 poisson 0.3"], "outside the range"),
+    ("mca-missing-type-2", [MP, "pair_coeff 1 1 bulk 1 shear 1"], "no material for atom type 2"),
+    ("mca-radius-zero", ["set atom 1 diameter 0.0", MP, MC], "radius <= 0"),
+    ("mca-coincident", ["set atom 2 x 0.0", MP, MC], "coincident"),
+    ("mca-vel-no", ["comm_modify vel no", MP, MC], "comm_modify vel yes"),
+    ("mca-shift", [MP, MC, "pair_modify shift yes"], "shift yes does not apply"),
+    ("mca-compute-args", [MP, MC, "compute s all mca/atom 1"], "takes no arguments"),
+    ("mca-compute-other-pair", ["pair_style zero 1.0", "pair_coeff * *",
+                                "compute s all mca/atom"], "needs pair_style mca"),
+    ("mca-ok", [MP, MC, "compute s all mca/atom", "compute m all reduce max c_s[8]",
+                "thermo_style custom step pe press c_m"], OK),
+    ("mca-ok-manybody-no", [MP + " manybody no", MC], OK),
+    ("mca-ok-newton-off", ["newton off on", MP, MC], OK),
+    ("mca-ok-negative-nu", [MP, "pair_coeff * * young 1 poisson -0.9"], OK),
+]:
+    row(rid, MCA, cmds, expect)
+row("mca-atomic-style", mca_box("atomic"), ["mass * 1.0", MP, MC], "requires atom_style sphere")
+row("mca-empty-box", MCA[:5] + ["create_box 2 box", "thermo_modify norm no"], [MP, MC], OK)
+row("mca-thin-periodic-box", mca_box(zlo=-0.5, zhi=0.5), [MP, MC], "periodic box is 1 wide")
+row("mca-units-metal", mca_box(units="metal"), ["neighbor 0.2 bin", MP,
+                                               "pair_coeff * * young 1e6 poisson 0.3"], OK)
+row("mca-units-metal-default-skin", mca_box(units="metal"),
+    [MP, "pair_coeff * * young 1e6 poisson 0.3"], "periodic box is 6 wide along x")
+
+
 # ---------------------------------------------------------------- the test
 
 def observe(setup, cmds):
