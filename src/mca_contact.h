@@ -32,6 +32,12 @@ namespace ClusterDyn {
     // i (3); DPREV: x_j - x_i at the last evaluation (3)
 
     static double half_stiffness(double shear, double radius) { return 2.0 * shear / radius; }
+
+    // the strength of a pair: the weaker element's (0: that element's links never break)
+    static double pair_strength(double si, double sj)
+    {
+      return si > 0.0 && sj > 0.0 ? (si < sj ? si : sj) : (si > 0.0 ? si : sj);
+    }
     static double series(double ai, double aj) { return ai * aj / (ai + aj); }
 
     // the contact area an unlinked pair pushes through: a close-packed element's face

@@ -48,7 +48,7 @@ PairMCA::PairMCA(LAMMPS *lmp) :
   beyond_contact = 1;    // fix neigh/history keeps every listed pair's state, not only contacts
   comm_forward = 1;
   comm_reverse = STRESS_COLUMNS;
-  nextra = 3;    // pvector: the state's tally (no pair breaks or forms in the elastic core)
+  nextra = 3;    // pvector: broken links, links formed, their energy (the state's tally)
   pvector = new double[nextra]();
 }
 
@@ -108,10 +108,11 @@ void PairMCA::compute(int eflag, int vflag)
   if (pass.fresh) make_links(pass);
   if (update->setupflag && update->whichflag == 1) check_time_step();
   if (setting.manybody) volumetric_strain(pass);
-  pair_forces(pass);
+  StateTally changes;
+  pair_forces(pass, changes);
   if (setting.manybody && eflag) manybody_energy();
   if (vflag_fdotr) virial_fdotr_compute();
-  state.end(StateTally(), pvector);
+  state.end(changes, pvector);
 }
 
 /* ----------------------------------------------------------------------
@@ -227,7 +228,7 @@ void PairMCA::volumetric_strain(const StatePass &pass)
    unlinked pair: compression only, S_u a (r - R_i - R_j) for r < R_i + R_j
 ------------------------------------------------------------------------- */
 
-void PairMCA::pair_forces(const StatePass &pass)
+void PairMCA::pair_forces(const StatePass &pass, StateTally &changes)
 {
   double **x = atom->x, **f = atom->f, **torque = atom->torque, **omega = atom->omega;
   const double *radius = atom->radius;
@@ -285,19 +286,33 @@ void PairMCA::pair_forces(const StatePass &pass)
         double du[3] = {d[0] - dprev[0], d[1] - dprev[1], d[2] - dprev[2]};
         // a stress left out of the new tangent plane (the pair turned otherwise than its
         // contact spins) is brought into it at its magnitude
-        const double tau2 = C::dot(tau, tau), taun = C::dot(tau, n);
+        const double tau_old2 = C::dot(tau, tau), taun = C::dot(tau, n);
         if (taun != 0.0) {
-          const double keep = tau2 > taun * taun ? sqrt(tau2 / (tau2 - taun * taun)) : 0.0;
+          const double keep =
+              tau_old2 > taun * taun ? sqrt(tau_old2 / (tau_old2 - taun * taun)) : 0.0;
           for (int k = 0; k < 3; k++) tau[k] = (tau[k] - taun * n[k]) * keep;
         }
         const double dun = C::dot(du, n);
         for (int k = 0; k < 3; k++) {
           tau[k] += a * (du[k] - dun * n[k]);
           dprev[k] = d[k];
+        }
+        const double tau2 = C::dot(tau, tau);
+        const double strength = C::pair_strength(mi.strength, mj.strength);
+        if (strength > 0.0 && sigma > 0.0 && sigma * sigma + 3.0 * tau2 >= strength * strength) {
+          // the link breaks (type a): from now on an unlinked pair, apart in tension
+          const double w = newton || j < nlocal ? 1.0 : 0.5;
+          changes.broken += w;
+          changes.ejump += w * area * (0.5 * a * elong * elong + 0.5 * tau2 / a);
+          int &word = pass.words[i][jj];
+          word = state_word(word, 0, pass.trial);
+          continue;
+        }
+        for (int k = 0; k < 3; k++) {
           ft[k] = area * tau[k];
           fi[k] = area * sigma * n[k] + ft[k];
         }
-        if (eflag_either) evdwl = area * (0.5 * a * elong * elong + 0.5 * C::dot(tau, tau) / a);
+        if (eflag_either) evdwl = area * (0.5 * a * elong * elong + 0.5 * tau2 / a);
       } else {
         const double area = C::unlinked_area(ri, rj);
         const double overlap = r - ri - rj;    // < 0
@@ -466,6 +481,7 @@ void PairMCA::scale_materials()
     m.bulk *= p2e;
     m.shear *= p2e;
     m.lambda *= p2e;
+    m.strength *= p2e;
   }
 }
 
@@ -557,6 +573,7 @@ void PairMCA::write_restart(FILE *fp)
     fwrite(&material_set[i], sizeof(int), 1, fp);
     fwrite(&material[i].bulk, sizeof(double), 1, fp);
     fwrite(&material[i].shear, sizeof(double), 1, fp);
+    fwrite(&material[i].strength, sizeof(double), 1, fp);
   }
 }
 
@@ -570,10 +587,12 @@ void PairMCA::read_restart(FILE *fp)
       utils::sfread(FLERR, &material_set[i], sizeof(int), 1, fp, nullptr, error);
       utils::sfread(FLERR, &m.bulk, sizeof(double), 1, fp, nullptr, error);
       utils::sfread(FLERR, &m.shear, sizeof(double), 1, fp, nullptr, error);
+      utils::sfread(FLERR, &m.strength, sizeof(double), 1, fp, nullptr, error);
     }
     MPI_Bcast(&material_set[i], 1, MPI_INT, 0, world);
     MPI_Bcast(&m.bulk, 1, MPI_DOUBLE, 0, world);
     MPI_Bcast(&m.shear, 1, MPI_DOUBLE, 0, world);
+    MPI_Bcast(&m.strength, 1, MPI_DOUBLE, 0, world);
     m.lambda = m.bulk - 2.0 * m.shear / 3.0;
   }
 }
@@ -591,17 +610,22 @@ void PairMCA::read_restart_settings(FILE *fp)
   state.read_restart(fp);
 }
 
+static std::string material_words(const McaMaterial &m)
+{
+  std::string words = fmt::format("bulk {:.17g} shear {:.17g}", m.bulk, m.shear);
+  if (m.strength > 0.0) words += fmt::format(" strength {:.17g}", m.strength);
+  return words;
+}
+
 void PairMCA::write_data(FILE *fp)
 {
-  for (int i = 1; i <= atom->ntypes; i++)
-    fmt::print(fp, "{} bulk {:.17g} shear {:.17g}\n", i, material[i].bulk, material[i].shear);
+  for (int i = 1; i <= atom->ntypes; i++) fmt::print(fp, "{} {}\n", i, material_words(material[i]));
 }
 
 void PairMCA::write_data_all(FILE *fp)
 {
   for (int i = 1; i <= atom->ntypes; i++)
-    fmt::print(fp, "{} {} bulk {:.17g} shear {:.17g}\n", i, i, material[i].bulk,
-               material[i].shear);
+    fmt::print(fp, "{} {} {}\n", i, i, material_words(material[i]));
 }
 
 /* ---------------------------------------------------------------------- */

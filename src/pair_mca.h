@@ -80,7 +80,7 @@ namespace ClusterDyn {
     void grow(int nall);
     void make_links(const StatePass &);
     void volumetric_strain(const StatePass &);
-    void pair_forces(const StatePass &);
+    void pair_forces(const StatePass &, StateTally &);
     void manybody_energy();
     void check_reach();
     void check_sizes();
