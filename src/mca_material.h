@@ -12,6 +12,11 @@
 #include "arg_values.h"
 #include "keyword_set.h"
 
+#include "comm.h"
+#include "utils.h"
+
+#include <cstdio>
+#include <mpi.h>
 #include <string>
 
 namespace LAMMPS_NS {
@@ -22,6 +27,31 @@ namespace ClusterDyn {
     double shear = 0.0;     // G
     double lambda = 0.0;    // Lame's first parameter K - 2G/3: the many-body (volumetric) term
     double strength = 0.0;  // sigma_c; 0: the links never break
+
+    // the words of pair_coeff that give this material back (data files)
+    std::string words() const
+    {
+      std::string w = fmt::format("bulk {:.17g} shear {:.17g}", bulk, shear);
+      if (strength > 0.0) w += fmt::format(" strength {:.17g}", strength);
+      return w;
+    }
+
+    void write_restart(FILE *fp) const
+    {
+      const double v[3] = {bulk, shear, strength};
+      fwrite(v, sizeof(double), 3, fp);
+    }
+
+    void read_restart(FILE *fp, LAMMPS *lmp)    // processor 0 reads, all take it
+    {
+      double v[3];
+      if (lmp->comm->me == 0) utils::sfread(FLERR, v, sizeof(double), 3, fp, nullptr, lmp->error);
+      MPI_Bcast(v, 3, MPI_DOUBLE, 0, lmp->world);
+      bulk = v[0];
+      shear = v[1];
+      strength = v[2];
+      lambda = bulk - 2.0 * shear / 3.0;
+    }
 
     double young() const { return 9.0 * bulk * shear / (3.0 * bulk + shear); }
     double poisson() const { return (3.0 * bulk - 2.0 * shear) / (2.0 * (3.0 * bulk + shear)); }

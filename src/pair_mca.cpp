@@ -20,9 +20,7 @@
 #include "domain.h"
 #include "error.h"
 #include "force.h"
-#include "fix.h"
 #include "memory.h"
-#include "modify.h"
 #include "neigh_list.h"
 #include "neighbor.h"
 #include "update.h"
@@ -36,9 +34,9 @@ using namespace ClusterDyn;
 using C = McaContact;
 
 PairMCA::PairMCA(LAMMPS *lmp) :
-    Pair(lmp), state(lmp, this, "Pair mca", C::NVALUES), zcount(nullptr), theta(nullptr),
+    Pair(lmp), guard(lmp), state(lmp, this, "Pair mca", C::NVALUES), sums(nullptr),
     stress(nullptr), nmax(0), stress_wanted(0), stress_nlocal(-1), stress_step(-1),
-    comm_what(COMM_THETA)
+    comm_what(COMM_SUMS)
 {
   single_enable = 0;
   restartinfo = 1;
@@ -55,8 +53,7 @@ PairMCA::PairMCA(LAMMPS *lmp) :
 PairMCA::~PairMCA()
 {
   delete[] pvector;
-  memory->destroy(zcount);
-  memory->destroy(theta);
+  memory->destroy(sums);
   memory->destroy(stress);
   if (allocated) {
     memory->destroy(setflag);
@@ -75,18 +72,15 @@ void PairMCA::allocate()
     for (int j = i; j < np1; j++) setflag[i][j] = 1;
   material.assign(np1, McaMaterial());
   material_set.assign(np1, 0);
-  rmax.assign(np1, 0.0);
 }
 
 void PairMCA::grow(int nall)
 {
   if (nall <= nmax) return;
   nmax = atom->nmax;
-  memory->destroy(zcount);
-  memory->destroy(theta);
+  memory->destroy(sums);
   memory->destroy(stress);
-  memory->create(zcount, nmax, "pair:zcount");
-  memory->create(theta, nmax, "pair:theta");
+  memory->create(sums, nmax, "pair:sums");
   memory->create(stress, nmax, STRESS_COLUMNS, "pair:stress");
 }
 
@@ -103,10 +97,10 @@ void PairMCA::compute(int eflag, int vflag)
   ev_init(eflag, vflag);
   const StatePass pass = state.begin();
   grow(atom->nlocal + atom->nghost);
-  if (neighbor->ago == 0) check_reach();
-  check_sizes();
+  if (neighbor->ago == 0) guard.at_list_build();
+  guard.each_step();
   if (pass.fresh) make_links(pass);
-  if (update->setupflag && update->whichflag == 1) check_time_step();
+  if (update->setupflag && update->whichflag == 1) guard.at_setup(scaled, setting.fraction);
   if (setting.manybody) volumetric_strain(pass);
   StateTally changes;
   pair_forces(pass, changes);
@@ -129,6 +123,7 @@ void PairMCA::make_links(const StatePass &pass)
   const double *radius = atom->radius;
   const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
   const int newton = force->newton_pair;
+  double *zcount = sums;    // linked pairs per element
   const double reach = 1.0 + setting.tolerance;
   double deep = 0.0;    // pairs linked closer than half their contact distance
   for (int i = 0; i < nall; i++) zcount[i] = 0.0;
@@ -162,7 +157,7 @@ void PairMCA::make_links(const StatePass &pass)
     error->warning(FLERR, "Pair mca: {:.0f} pairs linked closer than half their contact distance "
                    "R_i + R_j (overlapping elements): they are linked stress free where they are",
                    deep_all);
-  comm_what = COMM_ZCOUNT;
+  comm_what = COMM_SUMS;
   if (newton) comm->reverse_comm(this);
   comm->forward_comm(this);
 
@@ -192,6 +187,7 @@ void PairMCA::volumetric_strain(const StatePass &pass)
   const int *type = atom->type;
   const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
   const int newton = force->newton_pair;
+  double *theta = sums;
   for (int i = 0; i < nall; i++) theta[i] = 0.0;
 
   for (int ii = 0; ii < list->inum; ii++) {
@@ -209,7 +205,7 @@ void PairMCA::volumetric_strain(const StatePass &pass)
       if (newton || j < nlocal) theta[j] += elong * ai / (ai + aj);
     }
   }
-  comm_what = COMM_THETA;
+  comm_what = COMM_SUMS;
   if (newton) comm->reverse_comm(this);
   for (int i = 0; i < nlocal; i++) theta[i] /= element_volume(i);
   comm->forward_comm(this);
@@ -236,6 +232,7 @@ void PairMCA::pair_forces(const StatePass &pass, StateTally &changes)
   const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
   const int newton = force->newton_pair;
   const int manybody = setting.manybody;
+  const double *theta = sums;    // volumetric strains (when manybody)
   // a setup re-evaluates the same positions; a minimizer does not turn the elements
   const int moving = !update->setupflag && update->whichflag == 1;
   const double dt = update->dt;
@@ -360,69 +357,9 @@ void PairMCA::pair_forces(const StatePass &pass, StateTally &changes)
   }
 }
 
-/* ----------------------------------------------------------------------
-   at a list build: the box holds each partner once (a periodic width
-   above twice the list's reach: two images of one partner would share one
-   pair state)
-------------------------------------------------------------------------- */
-
-void PairMCA::check_reach()
-{
-  const double reach = neighbor->cutneighmax;
-  const double *h_inv = domain->h_inv;
-  const double width[3] = {
-      domain->triclinic ? 1.0 / sqrt(h_inv[0] * h_inv[0] + h_inv[5] * h_inv[5] +
-                                     h_inv[4] * h_inv[4]) : domain->xprd,
-      domain->triclinic ? 1.0 / sqrt(h_inv[1] * h_inv[1] + h_inv[3] * h_inv[3]) : domain->yprd,
-      domain->triclinic ? 1.0 / h_inv[2] : domain->zprd};
-  for (int k = 0; k < 3; k++)
-    if (domain->periodicity[k] && width[k] <= 2.0 * reach)
-      error->all(FLERR, "Pair mca: the periodic box is {:.6g} wide along {}, not more than twice "
-                 "the neighbour list's reach {:.6g}: one element would meet another through two "
-                 "images; use a larger box (replicate)", width[k], "xyz"[k], reach);
-}
-
-// every step: no element larger than the radii the cutoffs were made for (fix adapt)
-void PairMCA::check_sizes()
-{
-  const double *radius = atom->radius;
-  const int *type = atom->type;
-  for (int i = 0; i < atom->nlocal; i++)
-    if (radius[i] > rmax[type[i]])
-      error->one(FLERR, "Pair mca: element {} is larger than the elements of its type were when "
-                 "the run started (the cutoffs are made from them, from fix pour and from fix "
-                 "deposit): sizes are fixed during a run", atom->tag[i]);
-}
-
-/* ----------------------------------------------------------------------
-   a setup: the time step against the time a longitudinal wave takes to
-   cross the smallest element, d sqrt(rho / (K + 4G/3)), rho = m / Omega
-------------------------------------------------------------------------- */
-
-void PairMCA::check_time_step()
-{
-  const double *radius = atom->radius, *rmass = atom->rmass;
-  if (!rmass) return;
-  const int *type = atom->type;
-  double shortest = INFINITY;
-  for (int i = 0; i < atom->nlocal; i++) {
-    const McaMaterial &m = scaled[type[i]];
-    const double rho = rmass[i] / element_volume(i);
-    shortest = MIN(shortest, 2.0 * radius[i] * sqrt(rho / (m.bulk + 4.0 * m.shear / 3.0)));
-  }
-  double all;
-  MPI_Allreduce(&shortest, &all, 1, MPI_DOUBLE, MPI_MIN, world);
-  // velocity Verlet: forces in force units, masses in mass units (ftm2v)
-  const double crossing = all / sqrt(force->ftm2v);
-  if (std::isfinite(crossing) && update->dt > 0.2 * crossing && comm->me == 0)
-    error->warning(FLERR, "Pair mca: timestep {:.6g} is more than 0.2 of the time {:.6g} a "
-                   "longitudinal wave takes to cross the smallest element: expect energy "
-                   "errors above 1e-2 or instability (doc: dt <= 0.1 of it)", update->dt,
-                   crossing);
-}
-
 void PairMCA::manybody_energy()
 {
+  const double *theta = sums;
   const int *type = atom->type;
   for (int i = 0; i < atom->nlocal; i++) {
     const double e = 0.5 * scaled[type[i]].lambda * element_volume(i) * theta[i] * theta[i];
@@ -501,32 +438,7 @@ void PairMCA::init_style()
   if (tail_flag) error->all(FLERR, "Pair mca: pair_modify tail yes does not apply");
   if (offset_flag) error->all(FLERR, "Pair mca: pair_modify shift yes does not apply");
 
-  // the largest radius per type (cutoffs), and no element without a size
-  std::vector<double> mine(atom->ntypes + 1, 0.0);
-  double rmin = INFINITY;
-  tagint bad = 0;
-  for (int i = 0; i < atom->nlocal; i++) {
-    const double r = atom->radius[i];
-    mine[atom->type[i]] = MAX(mine[atom->type[i]], r);
-    if (!(r > 0.0) && (bad == 0 || r < rmin)) {
-      rmin = r;
-      bad = atom->tag[i];
-    }
-  }
-  for (const char *style : {"^pour", "^deposit"})
-    for (Fix *inserting : modify->get_fix_by_style(style))
-      for (int t = 1; t <= atom->ntypes; t++) {
-        int itype = t;
-        const double *r = (const double *) inserting->extract("radius", itype);
-        if (r) mine[t] = MAX(mine[t], *r);
-      }
-  MPI_Allreduce(mine.data(), rmax.data(), atom->ntypes + 1, MPI_DOUBLE, MPI_MAX, world);
-  tagint anybad;
-  MPI_Allreduce(&bad, &anybad, 1, MPI_LMP_TAGINT, MPI_MAX, world);
-  if (anybad)
-    error->all(FLERR, "Pair mca: element {} has radius <= 0 (elements need a positive "
-               "diameter: set diameter)", anybad);
-
+  guard.init();
   scale_materials();
   neighbor->add_request(this, NeighConst::REQ_HISTORY);
   state.init();
@@ -539,7 +451,8 @@ double PairMCA::init_one(int i, int j)
     if (!material_set[t])
       error->all(FLERR, "Pair mca: no material for atom type {}: give pair_coeff {} {} bulk K "
                  "shear G (or young E poisson nu)", t, t, t);
-  const double cut = McaSettings::REACH * (1.0 + setting.tolerance) * (rmax[i] + rmax[j]);
+  const double cut = McaSettings::REACH * (1.0 + setting.tolerance) *
+                     (guard.largest_radius(i) + guard.largest_radius(j));
   if (i == j && cut > 0.0)
     check_neighbor_skin(lmp, cut, "Pair mca");
   return cut;
@@ -571,9 +484,7 @@ void PairMCA::write_restart(FILE *fp)
   write_restart_settings(fp);
   for (int i = 1; i <= atom->ntypes; i++) {
     fwrite(&material_set[i], sizeof(int), 1, fp);
-    fwrite(&material[i].bulk, sizeof(double), 1, fp);
-    fwrite(&material[i].shear, sizeof(double), 1, fp);
-    fwrite(&material[i].strength, sizeof(double), 1, fp);
+    material[i].write_restart(fp);
   }
 }
 
@@ -582,18 +493,9 @@ void PairMCA::read_restart(FILE *fp)
   read_restart_settings(fp);
   allocate();
   for (int i = 1; i <= atom->ntypes; i++) {
-    McaMaterial &m = material[i];
-    if (comm->me == 0) {
-      utils::sfread(FLERR, &material_set[i], sizeof(int), 1, fp, nullptr, error);
-      utils::sfread(FLERR, &m.bulk, sizeof(double), 1, fp, nullptr, error);
-      utils::sfread(FLERR, &m.shear, sizeof(double), 1, fp, nullptr, error);
-      utils::sfread(FLERR, &m.strength, sizeof(double), 1, fp, nullptr, error);
-    }
+    if (comm->me == 0) utils::sfread(FLERR, &material_set[i], sizeof(int), 1, fp, nullptr, error);
     MPI_Bcast(&material_set[i], 1, MPI_INT, 0, world);
-    MPI_Bcast(&m.bulk, 1, MPI_DOUBLE, 0, world);
-    MPI_Bcast(&m.shear, 1, MPI_DOUBLE, 0, world);
-    MPI_Bcast(&m.strength, 1, MPI_DOUBLE, 0, world);
-    m.lambda = m.bulk - 2.0 * m.shear / 3.0;
+    material[i].read_restart(fp, lmp);
   }
 }
 
@@ -610,37 +512,28 @@ void PairMCA::read_restart_settings(FILE *fp)
   state.read_restart(fp);
 }
 
-static std::string material_words(const McaMaterial &m)
-{
-  std::string words = fmt::format("bulk {:.17g} shear {:.17g}", m.bulk, m.shear);
-  if (m.strength > 0.0) words += fmt::format(" strength {:.17g}", m.strength);
-  return words;
-}
-
 void PairMCA::write_data(FILE *fp)
 {
-  for (int i = 1; i <= atom->ntypes; i++) fmt::print(fp, "{} {}\n", i, material_words(material[i]));
+  for (int i = 1; i <= atom->ntypes; i++) fmt::print(fp, "{} {}\n", i, material[i].words());
 }
 
 void PairMCA::write_data_all(FILE *fp)
 {
   for (int i = 1; i <= atom->ntypes; i++)
-    fmt::print(fp, "{} {} {}\n", i, i, material_words(material[i]));
+    fmt::print(fp, "{} {} {}\n", i, i, material[i].words());
 }
 
 /* ---------------------------------------------------------------------- */
 
 int PairMCA::pack_forward_comm(int n, int *list, double *buf, int, int *)
 {
-  const double *a = comm_what == COMM_ZCOUNT ? zcount : theta;
-  for (int i = 0; i < n; i++) buf[i] = a[list[i]];
+  for (int i = 0; i < n; i++) buf[i] = sums[list[i]];
   return n;
 }
 
 void PairMCA::unpack_forward_comm(int n, int first, double *buf)
 {
-  double *a = comm_what == COMM_ZCOUNT ? zcount : theta;
-  for (int i = 0; i < n; i++) a[first + i] = buf[i];
+  for (int i = 0; i < n; i++) sums[first + i] = buf[i];
 }
 
 int PairMCA::pack_reverse_comm(int n, int first, double *buf)
@@ -650,8 +543,7 @@ int PairMCA::pack_reverse_comm(int n, int first, double *buf)
     for (int i = first; i < first + n; i++)
       for (int k = 0; k < STRESS_COLUMNS; k++) buf[m++] = stress[i][k];
   } else {
-    const double *a = comm_what == COMM_ZCOUNT ? zcount : theta;
-    for (int i = first; i < first + n; i++) buf[m++] = a[i];
+    for (int i = first; i < first + n; i++) buf[m++] = sums[i];
   }
   return m;
 }
@@ -663,12 +555,11 @@ void PairMCA::unpack_reverse_comm(int n, int *list, double *buf)
     for (int i = 0; i < n; i++)
       for (int k = 0; k < STRESS_COLUMNS; k++) stress[list[i]][k] += buf[m++];
   } else {
-    double *a = comm_what == COMM_ZCOUNT ? zcount : theta;
-    for (int i = 0; i < n; i++) a[list[i]] += buf[m++];
+    for (int i = 0; i < n; i++) sums[list[i]] += buf[m++];
   }
 }
 
 double PairMCA::memory_usage()
 {
-  return (double) nmax * (2 + STRESS_COLUMNS) * sizeof(double);
+  return (double) nmax * (1 + STRESS_COLUMNS) * sizeof(double);
 }

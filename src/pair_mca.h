@@ -17,6 +17,7 @@ PairStyle(mca,PairMCA);
 #define LMP_CLUSTERDYN_PAIR_MCA_H
 
 #include "atom.h"
+#include "mca_guard.h"
 #include "mca_material.h"
 #include "mca_settings.h"
 #include "pair.h"
@@ -67,13 +68,15 @@ namespace ClusterDyn {
     std::vector<McaMaterial> material;    // per atom type, as given (pressure units)
     std::vector<McaMaterial> scaled;      // the same in energy/volume
     std::vector<int> material_set;
-    std::vector<double> rmax;             // the largest radius per atom type
+    McaGuard guard;                       // checks; the largest radius per type
     PairState state;
-    double *zcount, *theta;               // per atom: linked pairs at a setup; volumetric strain
+    // per atom, the sum of one pass over the pairs: at a setup the linked pairs (make_links),
+    // then the volumetric strain theta (volumetric_strain, used by the forces)
+    double *sums;
     double **stress;
     int nmax, stress_wanted, stress_nlocal;
     bigint stress_step;
-    enum CommWhat { COMM_ZCOUNT, COMM_THETA, COMM_STRESS } comm_what;
+    enum CommWhat { COMM_SUMS, COMM_STRESS } comm_what;
 
     void allocate();
     void scale_materials();
@@ -82,9 +85,6 @@ namespace ClusterDyn {
     void volumetric_strain(const StatePass &);
     void pair_forces(const StatePass &, StateTally &);
     void manybody_energy();
-    void check_reach();
-    void check_sizes();
-    void check_time_step();
     [[noreturn]] void coincident(int i, int j) const;
   };
 

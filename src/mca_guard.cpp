@@ -1,0 +1,102 @@
+/* ----------------------------------------------------------------------
+   Cluster-dynamics plugin for LAMMPS: the checks of pair_style mca (see
+   mca_guard.h).
+------------------------------------------------------------------------- */
+
+#include "mca_guard.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "fix.h"
+#include "force.h"
+#include "modify.h"
+#include "neighbor.h"
+#include "update.h"
+
+#include <cmath>
+
+using namespace LAMMPS_NS;
+using namespace ClusterDyn;
+
+void McaGuard::init()
+{
+  const int ntypes = atom->ntypes;
+  std::vector<double> mine(ntypes + 1, 0.0);
+  double rmin = INFINITY;
+  tagint bad = 0;
+  for (int i = 0; i < atom->nlocal; i++) {
+    const double r = atom->radius[i];
+    mine[atom->type[i]] = MAX(mine[atom->type[i]], r);
+    if (!(r > 0.0) && (bad == 0 || r < rmin)) {
+      rmin = r;
+      bad = atom->tag[i];
+    }
+  }
+  for (const char *style : {"^pour", "^deposit"})
+    for (Fix *inserting : modify->get_fix_by_style(style))
+      for (int t = 1; t <= ntypes; t++) {
+        int itype = t;
+        const double *r = (const double *) inserting->extract("radius", itype);
+        if (r) mine[t] = MAX(mine[t], *r);
+      }
+  rmax.assign(ntypes + 1, 0.0);
+  MPI_Allreduce(mine.data(), rmax.data(), ntypes + 1, MPI_DOUBLE, MPI_MAX, world);
+  tagint anybad;
+  MPI_Allreduce(&bad, &anybad, 1, MPI_LMP_TAGINT, MPI_MAX, world);
+  if (anybad)
+    error->all(FLERR, "Pair mca: element {} has radius <= 0 (elements need a positive "
+               "diameter: set diameter)", anybad);
+}
+
+void McaGuard::at_list_build() const
+{
+  const double reach = neighbor->cutneighmax;
+  const double *h_inv = domain->h_inv;
+  const double width[3] = {
+      domain->triclinic ? 1.0 / sqrt(h_inv[0] * h_inv[0] + h_inv[5] * h_inv[5] +
+                                     h_inv[4] * h_inv[4]) : domain->xprd,
+      domain->triclinic ? 1.0 / sqrt(h_inv[1] * h_inv[1] + h_inv[3] * h_inv[3]) : domain->yprd,
+      domain->triclinic ? 1.0 / h_inv[2] : domain->zprd};
+  for (int k = 0; k < 3; k++)
+    if (domain->periodicity[k] && width[k] <= 2.0 * reach)
+      error->all(FLERR, "Pair mca: the periodic box is {:.6g} wide along {}, not more than twice "
+                 "the neighbour list's reach {:.6g}: one element would meet another through two "
+                 "images; use a larger box (replicate)", width[k], "xyz"[k], reach);
+}
+
+void McaGuard::each_step() const
+{
+  const double *radius = atom->radius;
+  const int *type = atom->type;
+  for (int i = 0; i < atom->nlocal; i++)
+    if (radius[i] > rmax[type[i]])
+      error->one(FLERR, "Pair mca: element {} is larger than the elements of its type were when "
+                 "the run started (the cutoffs are made from them, from fix pour and from fix "
+                 "deposit): sizes are fixed during a run", atom->tag[i]);
+}
+
+// d sqrt(rho / (K + 4G/3)), rho = m / Omega, over the elements
+void McaGuard::at_setup(const std::vector<McaMaterial> &scaled, double fraction) const
+{
+  const double *radius = atom->radius, *rmass = atom->rmass;
+  if (!rmass) return;
+  const int *type = atom->type;
+  double shortest = INFINITY;
+  for (int i = 0; i < atom->nlocal; i++) {
+    const McaMaterial &m = scaled[type[i]];
+    const double volume = 4.0 * M_PI / 3.0 * radius[i] * radius[i] * radius[i] / fraction;
+    const double rho = rmass[i] / volume;
+    shortest = MIN(shortest, 2.0 * radius[i] * sqrt(rho / (m.bulk + 4.0 * m.shear / 3.0)));
+  }
+  double all;
+  MPI_Allreduce(&shortest, &all, 1, MPI_DOUBLE, MPI_MIN, world);
+  // velocity Verlet: forces in force units, masses in mass units (ftm2v)
+  const double crossing = all / sqrt(force->ftm2v);
+  if (std::isfinite(crossing) && update->dt > 0.2 * crossing && comm->me == 0)
+    error->warning(FLERR, "Pair mca: timestep {:.6g} is more than 0.2 of the time {:.6g} a "
+                   "longitudinal wave takes to cross the smallest element: expect energy "
+                   "errors above 1e-2 or instability (doc: dt <= 0.1 of it)", update->dt,
+                   crossing);
+}
