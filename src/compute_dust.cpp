@@ -208,7 +208,7 @@ void ComputeDust::evaluate()
   if (links && !state->made())
     error->all(FLERR, "Compute dust links: the links are not made yet (they are at the setup of "
                "the first run or minimization: run 0 will do)");
-  const StateView view = links ? state->view() : StateView{list, nullptr, nullptr, 0};
+  const StateView view = links ? state->view() : StateView{list, nullptr, nullptr, 0, 1};
   const NeighList *bonds = view.list;
   for (int ii = 0; ii < bonds->inum; ii++) {
     const int i = bonds->ilist[ii];

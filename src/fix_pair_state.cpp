@@ -17,6 +17,7 @@
 #include "update.h"
 
 #include <algorithm>
+#include <cmath>
 #include <unordered_map>
 #include <unordered_set>
 #include <vector>
@@ -46,8 +47,21 @@ int FixPairState::setmask()
    copy the neighbour data to the atoms; my atoms remember their IDs
 ------------------------------------------------------------------------- */
 
+// a pair's word rides in the last of its doubles: the base class keeps only a flag
+static int word_of(const double *values, int dnum)
+{
+  return static_cast<int>(fabs(values[dnum - 1]));
+}
+
 void FixPairState::save()
 {
+  const NeighList *list = pair->list;
+  if (list)
+    for (int ii = 0; ii < list->inum; ii++) {
+      const int i = list->ilist[ii];
+      for (int jj = 0; jj < list->numneigh[i]; jj++)
+        if (firstflag[i][jj]) firstvalue[i][dnum * jj + dnum - 1] = firstflag[i][jj];
+    }
   FixNeighHistory::pre_exchange();
   maxexchange += 1;    // saved_id
   const tagint *tag = atom->tag;
@@ -106,6 +120,12 @@ void FixPairState::post_neighbor()
 {
   if (update->setupflag) relabel_partners();
   FixNeighHistory::post_neighbor();
+  const NeighList *list = pair->list;
+  for (int ii = 0; ii < list->inum; ii++) {
+    const int i = list->ilist[ii];
+    for (int jj = 0; jj < list->numneigh[i]; jj++)
+      if (firstflag[i][jj]) firstflag[i][jj] = word_of(firstvalue[i] + dnum * jj, dnum);
+  }
   nds_current = 1;
   check_lost_links();
 }
@@ -218,7 +238,8 @@ void FixPairState::check_lost_links()
 bigint FixPairState::count_saved_links()
 {
   bigint mine = 0, all;
-  for (int i = 0; i < atom->nlocal; i++) mine += npartner[i];
+  for (int i = 0; i < atom->nlocal; i++)
+    for (int m = 0; m < npartner[i]; m++) mine += word_of(valuepartner[i] + dnum * m, dnum) & 1;
   MPI_Allreduce(&mine, &all, 1, MPI_LMP_BIGINT, MPI_SUM, world);
   return all / 2;
 }

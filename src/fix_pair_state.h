@@ -19,7 +19,10 @@
    - after each list build the saved links are counted against the list: a
      link whose partner no longer exists ended with its atom (logged), a
      link missing from the list while both atoms exist is an error;
-   - in a minimization the owner settles tentative changes before a save.
+   - in a minimization the owner settles tentative changes before a save;
+   - a pair's whole state word (linked, or an unlinked pair that keeps its
+     doubles) is saved in the last of its dnum doubles and restored from it
+     (the base class restores every saved pair as flag 1).
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_CLUSTERDYN_FIX_PAIR_STATE_H

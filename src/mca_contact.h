@@ -25,11 +25,13 @@ namespace LAMMPS_NS {
 namespace ClusterDyn {
 
   struct McaContact {
-    // a linked pair's doubles, seen from the list's atom i (the partner's copy has the
-    // vectors negated: PairMCA::transfer_history)
-    enum { REF = 0, AREA = 1, TAU = 2, DPREV = 5, NVALUES = 8 };
+    // a pair's doubles, seen from the list's atom i (the partner's copy has the vectors
+    // negated: PairMCA::transfer_history)
+    enum { REF = 0, AREA = 1, TAU = 2, DPREV = 5, KAPPA = 8, EPL = 9, SIG = 10, NVALUES = 11 };
     // REF: the distance at linking (stress free); AREA: S_ij; TAU: the tangential stress on
-    // i (3); DPREV: x_j - x_i at the last evaluation (3)
+    // i (3; effective, undamaged); DPREV: x_j - x_i at the last evaluation (3); KAPPA: the
+    // largest effective equivalent stress (damage); EPL: the plastic elongation; SIG: the
+    // trial normal stress of this step (plasticity).  An unlinked contact uses TAU and DPREV.
 
     static double half_stiffness(double shear, double radius) { return 2.0 * shear / radius; }
 
@@ -57,6 +59,31 @@ namespace ClusterDyn {
       c[0] = a[1] * b[2] - a[2] * b[1];
       c[1] = a[2] * b[0] - a[0] * b[2];
       c[2] = a[0] * b[1] - a[1] * b[0];
+    }
+
+    // the tangential stress after this step's slide: tau and the last separation dprev turn
+    // with the contact's spin (null: they do not turn), tau is brought into the tangent plane
+    // of n at its magnitude, then grows by a du_t, du_t the slide of the contact points
+    static void slide(double *tau, double *dprev, const double *d, const double *n,
+                      const double *spin, double a)
+    {
+      if (spin) {
+        rotate(tau, spin);
+        rotate(dprev, spin);
+      }
+      const double du[3] = {d[0] - dprev[0], d[1] - dprev[1], d[2] - dprev[2]};
+      // a stress left out of the new tangent plane (the pair turned otherwise than its
+      // contact spins) is brought into it at its magnitude
+      const double tau_old2 = dot(tau, tau), taun = dot(tau, n);
+      if (taun != 0.0) {
+        const double keep = tau_old2 > taun * taun ? sqrt(tau_old2 / (tau_old2 - taun * taun)) : 0.0;
+        for (int k = 0; k < 3; k++) tau[k] = (tau[k] - taun * n[k]) * keep;
+      }
+      const double dun = dot(du, n);
+      for (int k = 0; k < 3; k++) {
+        tau[k] += a * (du[k] - dun * n[k]);
+        dprev[k] = d[k];
+      }
     }
 
     // v <- v turned by the rotation vector phi (angle |phi| about phi / |phi|), Rodrigues

@@ -4,15 +4,19 @@
    One force evaluation, as pair eam's: (a setup only) link the pairs of
    fresh elements and give them their contact areas; the volumetric strain
    of each element from its linked pairs, summed onto owners and sent to
-   ghosts; then the pair forces and torques.  The per-pair state (distance
-   at linking, contact area, tangential stress, last separation) lives in
-   the PairState component, so that it survives list builds, migration,
-   restarts and renumbering.
+   ghosts; (plasticity) the trial pair stresses, the elements' stresses
+   from them and their radial return; then the pair forces and torques,
+   with damage, breaking, friction and welding; last the energy that the
+   changes of state took from the many-body term.  The per-pair state
+   (mca_contact.h) lives in the PairState component, so that it survives
+   list builds, migration, restarts and renumbering.
 ------------------------------------------------------------------------- */
 
 #include "pair_mca.h"
 
 #include "mca_contact.h"
+#include "mca_friction.h"
+#include "mca_response.h"
 #include "skin_check.h"
 
 #include "atom.h"
@@ -26,6 +30,7 @@
 #include "update.h"
 
 #include <cmath>
+#include <algorithm>
 #include <cstring>
 
 using namespace LAMMPS_NS;
@@ -34,9 +39,9 @@ using namespace ClusterDyn;
 using C = McaContact;
 
 PairMCA::PairMCA(LAMMPS *lmp) :
-    Pair(lmp), guard(lmp), state(lmp, this, "Pair mca", C::NVALUES), sums(nullptr),
-    stress(nullptr), nmax(0), stress_wanted(0), stress_nlocal(-1), stress_step(-1),
-    comm_what(COMM_SUMS)
+    Pair(lmp), guard(lmp), plasticity(lmp), state(lmp, this, "Pair mca", C::NVALUES, NWORK),
+    responds(0), sums(nullptr), stress(nullptr), returned(nullptr), dtheta(nullptr), nmax(0),
+    stress_wanted(0), stress_nlocal(-1), stress_step(-1), comm_what(COMM_SUMS)
 {
   single_enable = 0;
   restartinfo = 1;
@@ -44,9 +49,9 @@ PairMCA::PairMCA(LAMMPS *lmp) :
   manybody_flag = 1;
   nondefault_history_transfer = 1;
   beyond_contact = 1;    // fix neigh/history keeps every listed pair's state, not only contacts
-  comm_forward = 1;
+  comm_forward = 2;
   comm_reverse = STRESS_COLUMNS;
-  nextra = 3;    // pvector: broken links, links formed, their energy (the state's tally)
+  nextra = 3 + NWORK;    // pvector: the state's tally, then the dissipated energies
   pvector = new double[nextra]();
 }
 
@@ -55,6 +60,8 @@ PairMCA::~PairMCA()
   delete[] pvector;
   memory->destroy(sums);
   memory->destroy(stress);
+  memory->destroy(returned);
+  memory->destroy(dtheta);
   if (allocated) {
     memory->destroy(setflag);
     memory->destroy(cutsq);
@@ -72,6 +79,12 @@ void PairMCA::allocate()
     for (int j = i; j < np1; j++) setflag[i][j] = 1;
   material.assign(np1, McaMaterial());
   material_set.assign(np1, 0);
+  unlinkable.assign(np1 * np1, 0);
+}
+
+bool PairMCA::linkable(int itype, int jtype) const
+{
+  return !unlinkable[itype * (atom->ntypes + 1) + jtype];
 }
 
 void PairMCA::grow(int nall)
@@ -80,8 +93,12 @@ void PairMCA::grow(int nall)
   nmax = atom->nmax;
   memory->destroy(sums);
   memory->destroy(stress);
+  memory->destroy(returned);
+  memory->destroy(dtheta);
   memory->create(sums, nmax, "pair:sums");
   memory->create(stress, nmax, STRESS_COLUMNS, "pair:stress");
+  memory->create(returned, nmax, 2, "pair:returned");
+  memory->create(dtheta, nmax, 3, "pair:dtheta");
 }
 
 double PairMCA::element_volume(int i) const
@@ -102,8 +119,10 @@ void PairMCA::compute(int eflag, int vflag)
   if (pass.fresh) make_links(pass);
   if (update->setupflag && update->whichflag == 1) guard.at_setup(scaled, setting.fraction);
   if (setting.manybody) volumetric_strain(pass);
+  if (plasticity.active()) plastic_trial(pass);
   StateTally changes;
   pair_forces(pass, changes);
+  if (setting.manybody && responds) manybody_changes(changes);
   if (setting.manybody && eflag) manybody_energy();
   if (vflag_fdotr) virial_fdotr_compute();
   state.end(changes, pvector);
@@ -111,16 +130,18 @@ void PairMCA::compute(int eflag, int vflag)
 
 /* ----------------------------------------------------------------------
    a setup: the pairs of fresh elements closer than (1 + tolerance)(R_i + R_j)
-   are linked, stress free at their present distance; their contact area is
-   S_ij = (S_i + S_j)/2 with S_i = 3 Omega_i / (Z_i R_i), Z_i the linked
-   pairs of element i (so that sum_j q_ij S_ij n n = Omega_i I on a regular
-   packing: Love's formula gives the element's stress)
+   are linked (unless their types never link), stress free at their present
+   distance; their contact area is S_ij = (S_i + S_j)/2 with
+   S_i = 3 Omega_i / (Z_i R_i), Z_i the linked pairs of element i (so that
+   sum_j q_ij S_ij n n = Omega_i I on a regular packing: Love's formula
+   gives the element's stress)
 ------------------------------------------------------------------------- */
 
 void PairMCA::make_links(const StatePass &pass)
 {
   double **x = atom->x;
   const double *radius = atom->radius;
+  const int *type = atom->type;
   const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
   const int newton = force->newton_pair;
   double *zcount = sums;    // linked pairs per element
@@ -135,17 +156,18 @@ void PairMCA::make_links(const StatePass &pass)
       const int j = jlist[jj] & NEIGHMASK;
       int &word = pass.words[i][jj];
       if (!pass.fresh[i] || !pass.fresh[j]) {
-        double *v = pass.values[i] + C::NVALUES * jj;
+        double *v = pass.pair_values(i, jj);
         double d[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2]};
         const double r = sqrt(C::dot(d, d));
         if (r == 0.0) coincident(i, j);
-        word = r < reach * (radius[i] + radius[j]) ? 1 : 0;
-        if (r < 0.5 * (radius[i] + radius[j])) deep += newton || j < nlocal ? 1.0 : 0.5;
+        const double rsum = radius[i] + radius[j];
+        word = r < reach * rsum && linkable(type[i], type[j]) ? 1 : 0;
+        if (word && r < 0.5 * rsum) deep += newton || j < nlocal ? 1.0 : 0.5;
         for (int k = 0; k < C::NVALUES; k++) v[k] = 0.0;
         v[C::REF] = r;
         for (int k = 0; k < 3; k++) v[C::DPREV + k] = d[k];
       }
-      if (word & 1) {
+      if (state_now(word)) {
         zcount[i] += 1.0;
         if (newton || j < nlocal) zcount[j] += 1.0;
       }
@@ -158,15 +180,15 @@ void PairMCA::make_links(const StatePass &pass)
                    "R_i + R_j (overlapping elements): they are linked stress free where they are",
                    deep_all);
   comm_what = COMM_SUMS;
-  if (newton) comm->reverse_comm(this);
-  comm->forward_comm(this);
+  if (newton) comm->reverse_comm(this, 1);
+  comm->forward_comm(this, 1);
 
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];
     const int *jlist = list->firstneigh[i];
     for (int jj = 0; jj < list->numneigh[i]; jj++) {
-      double *v = pass.values[i] + C::NVALUES * jj;
-      if (!(pass.words[i][jj] & 1) || v[C::AREA] != 0.0) continue;
+      double *v = pass.pair_values(i, jj);
+      if (!state_now(pass.words[i][jj]) || v[C::AREA] != 0.0) continue;
       const int j = jlist[jj] & NEIGHMASK;
       const double si = 3.0 * element_volume(i) / (zcount[i] * radius[i]);
       const double sj = 3.0 * element_volume(j) / (zcount[j] * radius[j]);
@@ -176,8 +198,9 @@ void PairMCA::make_links(const StatePass &pass)
 }
 
 /* ----------------------------------------------------------------------
-   theta_i = (1/Omega_i) sum_j S_ij w_i (r_ij - r_ref): the volume change of
-   element i from the elongations of its linked pairs (its share w_i of each)
+   theta_i = (1/Omega_i) sum_j (1 - D_ij) S_ij w_i (r_ij - r_ref - e_p): the
+   volume change of element i from the elastic elongations of its linked
+   pairs (its share w_i of each)
 ------------------------------------------------------------------------- */
 
 void PairMCA::volumetric_strain(const StatePass &pass)
@@ -193,35 +216,131 @@ void PairMCA::volumetric_strain(const StatePass &pass)
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];
     const int *jlist = list->firstneigh[i];
-    const double ai = C::half_stiffness(scaled[type[i]].shear, radius[i]);
+    const McaMaterial &mi = scaled[type[i]];
+    const double ai = C::half_stiffness(mi.shear, radius[i]);
     for (int jj = 0; jj < list->numneigh[i]; jj++) {
-      if (!(state_now(pass.words[i][jj]))) continue;
+      if (!state_now(pass.words[i][jj])) continue;
       const int j = jlist[jj] & NEIGHMASK;
-      const double *v = pass.values[i] + C::NVALUES * jj;
+      const McaMaterial &mj = scaled[type[j]];
+      const double *v = pass.pair_values(i, jj);
+      const McaResponse resp =
+          McaResponse::of_pair(mi.strength, mi.damage, mj.strength, mj.damage);
       const double dx = x[j][0] - x[i][0], dy = x[j][1] - x[i][1], dz = x[j][2] - x[i][2];
-      const double elong = v[C::AREA] * (sqrt(dx * dx + dy * dy + dz * dz) - v[C::REF]);
-      const double aj = C::half_stiffness(scaled[type[j]].shear, radius[j]);
+      const double elong = resp.intact(v[C::KAPPA]) * v[C::AREA] *
+                           (sqrt(dx * dx + dy * dy + dz * dz) - v[C::REF] - v[C::EPL]);
+      const double aj = C::half_stiffness(mj.shear, radius[j]);
       theta[i] += elong * aj / (ai + aj);
       if (newton || j < nlocal) theta[j] += elong * ai / (ai + aj);
     }
   }
   comm_what = COMM_SUMS;
-  if (newton) comm->reverse_comm(this);
+  if (newton) comm->reverse_comm(this, 1);
   for (int i = 0; i < nlocal; i++) theta[i] /= element_volume(i);
-  comm->forward_comm(this);
+  comm->forward_comm(this, 1);
 }
 
 /* ----------------------------------------------------------------------
-   linked pair: F_i = S (sigma n + tau), n from i to j, with
-     sigma = a (r - r_ref) + (a_j lambda_i theta_i + a_i lambda_j theta_j)/(a_i + a_j)
-     tau  += a du_t   (du_t: the tangential slide of j's contact point relative
-                       to i's since the last evaluation: the separation less
-                       the last one turned by the contact's spin; tau turned
-                       with it first: mca_contact.h)
-   torques q_ij n x S tau on i and q_ji n x S tau on j;
-   energy S (a (r - r_ref)^2 / 2 + |tau|^2 / (2a)) per pair plus
-   lambda_i Omega_i theta_i^2 / 2 per element (manybody_energy).
-   unlinked pair: compression only, S_u a (r - R_i - R_j) for r < R_i + R_j
+   a linked pair's effective normal stress at this step (before any return)
+     sigma~ = a (r - r_ref - e_p) + (a_j lambda_i theta_i + a_i lambda_j theta_j)/(a_i + a_j)
+   and its tangential stress tau~ after this step's slide (stored in v)
+------------------------------------------------------------------------- */
+
+double PairMCA::linked_trial(int i, int j, double *v, const double *d, const double *n,
+                             double r, const double *spin) const
+{
+  const double *radius = atom->radius;
+  const int *type = atom->type;
+  const McaMaterial &mi = scaled[type[i]], &mj = scaled[type[j]];
+  const double ai = C::half_stiffness(mi.shear, radius[i]);
+  const double aj = C::half_stiffness(mj.shear, radius[j]);
+  const double a = C::series(ai, aj);
+  double sigma = a * (r - v[C::REF] - v[C::EPL]);
+  if (setting.manybody)
+    sigma += (aj * mi.lambda * sums[i] + ai * mj.lambda * sums[j]) / (ai + aj);
+  C::slide(v + C::TAU, v + C::DPREV, d, n, spin, a);
+  return sigma;
+}
+
+/* ----------------------------------------------------------------------
+   plasticity: every linked pair's trial stresses (tau stored, sigma in
+   SIG), the elements' stresses from them (Love's formula), then each
+   element's radial return factor and mean stress, sent to ghosts
+------------------------------------------------------------------------- */
+
+void PairMCA::plastic_trial(const StatePass &pass)
+{
+  double **x = atom->x, **omega = atom->omega;
+  const double *radius = atom->radius;
+  const int *type = atom->type;
+  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
+  const int newton = force->newton_pair;
+  const int moving = !update->setupflag && update->whichflag == 1;
+  const double dt = update->dt;
+  for (int i = 0; i < nall; i++)
+    for (int k = 0; k < STRESS_COLUMNS; k++) stress[i][k] = 0.0;
+
+  for (int ii = 0; ii < list->inum; ii++) {
+    const int i = list->ilist[ii];
+    const int *jlist = list->firstneigh[i];
+    for (int jj = 0; jj < list->numneigh[i]; jj++) {
+      if (!state_now(pass.words[i][jj])) continue;
+      const int j = jlist[jj] & NEIGHMASK;
+      double *v = pass.pair_values(i, jj);
+      const double d[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2]};
+      const double r = sqrt(C::dot(d, d));
+      if (r == 0.0) coincident(i, j);
+      const double n[3] = {d[0] / r, d[1] / r, d[2] / r};
+      const double qi = r * radius[i] / (radius[i] + radius[j]), qj = r - qi;
+      double spin[3];
+      for (int k = 0; k < 3; k++) spin[k] = dt * (qi * omega[i][k] + qj * omega[j][k]) / r;
+      v[C::SIG] = linked_trial(i, j, v, d, n, r, moving ? spin : nullptr);
+      const McaMaterial &mi = scaled[type[i]], &mj = scaled[type[j]];
+      const double s = McaResponse::of_pair(mi.strength, mi.damage, mj.strength, mj.damage)
+                           .intact(v[C::KAPPA]) * v[C::AREA];
+      const double *tau = v + C::TAU;
+      double fi[3];
+      for (int k = 0; k < 3; k++) fi[k] = s * (v[C::SIG] * n[k] + tau[k]);
+      const double sym[6] = {n[0] * fi[0], n[1] * fi[1], n[2] * fi[2],
+                             0.5 * (n[0] * fi[1] + n[1] * fi[0]),
+                             0.5 * (n[0] * fi[2] + n[2] * fi[0]),
+                             0.5 * (n[1] * fi[2] + n[2] * fi[1])};
+      for (int k = 0; k < 6; k++) stress[i][k] += qi * sym[k];
+      if (newton || j < nlocal)
+        for (int k = 0; k < 6; k++) stress[j][k] += qj * sym[k];
+    }
+  }
+  stress_to_owners(false);
+  plasticity.return_map(stress, scaled, returned);
+  comm_what = COMM_RETURNED;
+  comm->forward_comm(this, 2);
+}
+
+// the element stresses summed onto their owners, divided by the volume (energy/volume) and
+// converted to pressure units if asked
+void PairMCA::stress_to_owners(bool to_pressure)
+{
+  comm_what = COMM_STRESS;
+  if (force->newton_pair) comm->reverse_comm(this);
+  const double scale = to_pressure ? force->nktv2p : 1.0;
+  for (int i = 0; i < atom->nlocal; i++) {
+    const double to_stress = scale / element_volume(i);
+    for (int k = 0; k < 6; k++) stress[i][k] *= to_stress;
+  }
+}
+
+/* ----------------------------------------------------------------------
+   linked pair: F_i = (1 - D) S (sigma~ n + tau~), n from i to j, with
+   sigma~ and tau~ from linked_trial() (tau~ += a du_t: the tangential slide
+   of j's contact point relative to i's since the last evaluation, the
+   stored stress turned with the contact's spin first: mca_contact.h);
+   plasticity scales the deviatoric parts by phi = min(phi_i, phi_j) about
+   the mean stress of the two elements and stores the plastic elongation;
+   torques q_ij n x F_t on i and q_ji n x F_t on j; energy
+   (1 - D) S (a e^2 / 2 + |tau~|^2 / (2a)) per pair plus
+   lambda_i Omega_i theta_i^2 / 2 per element (manybody_energy).  From the
+   stresses of this step (mca_response.h) a link that breaks transmits
+   nothing from this step on; damage grows for the next one.
+   unlinked pair: contact() below.
 ------------------------------------------------------------------------- */
 
 void PairMCA::pair_forces(const StatePass &pass, StateTally &changes)
@@ -231,14 +350,15 @@ void PairMCA::pair_forces(const StatePass &pass, StateTally &changes)
   const int *type = atom->type;
   const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
   const int newton = force->newton_pair;
-  const int manybody = setting.manybody;
-  const double *theta = sums;    // volumetric strains (when manybody)
+  const int plastic = plasticity.active();
   // a setup re-evaluates the same positions; a minimizer does not turn the elements
   const int moving = !update->setupflag && update->whichflag == 1;
   const double dt = update->dt;
   if (stress_wanted)
     for (int i = 0; i < nall; i++)
       for (int k = 0; k < STRESS_COLUMNS; k++) stress[i][k] = 0.0;
+  if (responds)
+    for (int i = 0; i < nall; i++) dtheta[i][0] = dtheta[i][1] = dtheta[i][2] = 0.0;
 
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];
@@ -249,72 +369,84 @@ void PairMCA::pair_forces(const StatePass &pass, StateTally &changes)
     for (int jj = 0; jj < list->numneigh[i]; jj++) {
       const int j = jlist[jj] & NEIGHMASK;
       const double rj = radius[j];
-      double d[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2]};
+      const double d[3] = {x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2]};
       const double rsq = C::dot(d, d);
-      const int linked = state_now(pass.words[i][jj]);
-      if (!linked && rsq >= (ri + rj) * (ri + rj)) continue;
+      int &word = pass.words[i][jj];
+      const int linked = state_now(word);
+      if (!linked && rsq >= (ri + rj) * (ri + rj)) {
+        word = kept_word(word, false);    // an open contact keeps nothing
+        continue;
+      }
       if (rsq == 0.0) coincident(i, j);
       const double r = sqrt(rsq);
       const double n[3] = {d[0] / r, d[1] / r, d[2] / r};
       const McaMaterial &mj = scaled[type[j]];
       const double aj = C::half_stiffness(mj.shear, rj);
       const double a = C::series(ai, aj);
-      double fi[3], ft[3] = {0.0, 0.0, 0.0}, evdwl = 0.0;
       const double qi = r * ri / (ri + rj), qj = r - qi;
+      const double w = newton || j < nlocal ? 1.0 : 0.5;
+      double spin[3];
+      for (int k = 0; k < 3; k++) spin[k] = dt * (qi * omega[i][k] + qj * omega[j][k]) / r;
+      double *v = pass.pair_values(i, jj);
+      double fi[3], ft[3], evdwl = 0.0;
 
       if (linked) {
-        double *v = pass.values[i] + C::NVALUES * jj;
-        double *tau = v + C::TAU, *dprev = v + C::DPREV;
+        const McaResponse resp =
+            McaResponse::of_pair(mi.strength, mi.damage, mj.strength, mj.damage);
+        const double intact = resp.intact(v[C::KAPPA]);
         const double area = v[C::AREA];
-        const double elong = r - v[C::REF];
-        double sigma = a * elong;
-        if (manybody) sigma += (aj * mi.lambda * theta[i] + ai * mj.lambda * theta[j]) / (ai + aj);
-
-        // the stored tangential stress and separation turn with the contact's spin; the
-        // difference of the separations is then the slide of the contact points
-        if (moving) {
-          const double *oi = omega[i], *oj = omega[j];
-          const double spin[3] = {dt * (qi * oi[0] + qj * oj[0]) / r,
-                                  dt * (qi * oi[1] + qj * oj[1]) / r,
-                                  dt * (qi * oi[2] + qj * oj[2]) / r};
-          C::rotate(tau, spin);
-          C::rotate(dprev, spin);
+        double *tau = v + C::TAU;
+        double sigma = plastic ? v[C::SIG] : linked_trial(i, j, v, d, n, r, moving ? spin : nullptr);
+        const double phi = plastic ? std::min(returned[i][0], returned[j][0]) : 1.0;
+        if (phi < 1.0) {
+          // radial return of the transmitted stresses about the elements' mean stress
+          const double mean = 0.5 * (returned[i][1] + returned[j][1]);
+          const double back = (intact * sigma - mean) * (1.0 - phi) / intact;
+          const double e_old = r - v[C::REF] - v[C::EPL], tau2_old = C::dot(tau, tau);
+          v[C::EPL] += back / a;
+          sigma -= back;
+          for (int k = 0; k < 3; k++) tau[k] *= phi;
+          const double e_new = e_old - back / a;
+          changes.work[TALLY_PLASTIC] += w * intact * area *
+              (0.5 * a * (e_old * e_old - e_new * e_new) + 0.5 * (tau2_old - C::dot(tau, tau)) / a);
+          if (responds) {
+            const double dv = -intact * area * back / a;
+            dtheta[i][2] += dv * aj / (ai + aj);
+            if (newton || j < nlocal) dtheta[j][2] += dv * ai / (ai + aj);
+          }
         }
-        double du[3] = {d[0] - dprev[0], d[1] - dprev[1], d[2] - dprev[2]};
-        // a stress left out of the new tangent plane (the pair turned otherwise than its
-        // contact spins) is brought into it at its magnitude
-        const double tau_old2 = C::dot(tau, tau), taun = C::dot(tau, n);
-        if (taun != 0.0) {
-          const double keep =
-              tau_old2 > taun * taun ? sqrt(tau_old2 / (tau_old2 - taun * taun)) : 0.0;
-          for (int k = 0; k < 3; k++) tau[k] = (tau[k] - taun * n[k]) * keep;
-        }
-        const double dun = C::dot(du, n);
-        for (int k = 0; k < 3; k++) {
-          tau[k] += a * (du[k] - dun * n[k]);
-          dprev[k] = d[k];
-        }
+        const double elong = r - v[C::REF] - v[C::EPL];
         const double tau2 = C::dot(tau, tau);
-        const double strength = C::pair_strength(mi.strength, mj.strength);
-        if (strength > 0.0 && sigma > 0.0 && sigma * sigma + 3.0 * tau2 >= strength * strength) {
-          // the link breaks (type a): from now on an unlinked pair, apart in tension
-          const double w = newton || j < nlocal ? 1.0 : 0.5;
-          changes.broken += w;
-          changes.ejump += w * area * (0.5 * a * elong * elong + 0.5 * tau2 / a);
-          int &word = pass.words[i][jj];
-          word = state_word(word, 0, pass.trial);
-          continue;
+        const double epair = area * (0.5 * a * elong * elong + 0.5 * tau2 / a);
+
+        // breaking (now) and damage (from the next step) at this step's stresses
+        const double s = resp.active() ? McaResponse::equivalent(sigma, tau2) : 0.0;
+        if (s > v[C::KAPPA]) {
+          const int breaks = s >= resp.peak();
+          const double lost = breaks ? intact : intact - resp.intact(s);
+          if (responds) {
+            const double dv = -lost * area * elong;
+            const int col = breaks ? 0 : 1;
+            dtheta[i][col] += dv * aj / (ai + aj);
+            if (newton || j < nlocal) dtheta[j][col] += dv * ai / (ai + aj);
+          }
+          if (breaks) {    // from now on an unlinked pair, apart in tension
+            changes.broken += w;
+            changes.ejump += w * intact * epair;
+            word = state_word(word, 0, pass.trial);
+            continue;
+          }
+          changes.work[TALLY_DAMAGE] += w * lost * epair;
+          v[C::KAPPA] = s;
         }
         for (int k = 0; k < 3; k++) {
-          ft[k] = area * tau[k];
-          fi[k] = area * sigma * n[k] + ft[k];
+          ft[k] = intact * area * tau[k];
+          fi[k] = intact * area * sigma * n[k] + ft[k];
         }
-        if (eflag_either) evdwl = area * (0.5 * a * elong * elong + 0.5 * tau2 / a);
+        if (eflag_either) evdwl = intact * epair;
       } else {
-        const double area = C::unlinked_area(ri, rj);
-        const double overlap = r - ri - rj;    // < 0
-        for (int k = 0; k < 3; k++) fi[k] = area * a * overlap * n[k];
-        if (eflag_either) evdwl = 0.5 * area * a * overlap * overlap;
+        contact(i, j, word, v, d, n, r, moving ? spin : nullptr, pass.trial, w, changes, fi, ft,
+                evdwl);
       }
 
       const bool jown = newton || j < nlocal;
@@ -348,12 +480,109 @@ void PairMCA::pair_forces(const StatePass &pass, StateTally &changes)
   if (stress_wanted) {
     stress_step = update->ntimestep;
     stress_nlocal = nlocal;
-    comm_what = COMM_STRESS;
-    if (newton) comm->reverse_comm(this);
-    for (int i = 0; i < nlocal; i++) {
-      const double to_pressure = force->nktv2p / element_volume(i);
-      for (int k = 0; k < 6; k++) stress[i][k] *= to_pressure;
+    stress_to_owners(true);
+  }
+}
+
+/* ----------------------------------------------------------------------
+   unlinked pair closer than R_i + R_j: compression S_u a (r - R_i - R_j)
+   on the face S_u of the harmonic mean radius, dry friction (the elastic
+   tangential stress capped at mu |sigma_n|, kept while the contact lasts)
+   and viscous friction eta v_t (mca_friction.h); pressed at the weld
+   stress, the pair links at R_i + R_j (its force unchanged) from the next
+   step, if its types may link
+------------------------------------------------------------------------- */
+
+void PairMCA::contact(int i, int j, int &word, double *v, const double *d, const double *n,
+                      double r, const double *spin, int trial, double w, StateTally &changes,
+                      double *fi, double *ft, double &evdwl)
+{
+  const double *radius = atom->radius;
+  const int *type = atom->type;
+  const McaMaterial &mi = scaled[type[i]], &mj = scaled[type[j]];
+  const double ri = radius[i], rj = radius[j];
+  const double ai = C::half_stiffness(mi.shear, ri), aj = C::half_stiffness(mj.shear, rj);
+  const double a = C::series(ai, aj);
+  const double area = C::unlinked_area(ri, rj);
+  const double overlap = r - ri - rj;    // < 0
+  const double sigma = a * overlap;
+  const McaFriction fr =
+      McaFriction::of_pair(mi.friction, mi.viscous, mi.weld, mj.friction, mj.viscous, mj.weld);
+  double tau[3] = {0.0, 0.0, 0.0};
+  if (fr.keeps_state()) {
+    if (!(word & WORD_KEPT)) {    // a new contact
+      for (int k = 0; k < C::NVALUES; k++) v[k] = 0.0;
+      for (int k = 0; k < 3; k++) v[C::DPREV + k] = d[k];
+      word = kept_word(word, true);
     }
+    C::slide(v + C::TAU, v + C::DPREV, d, n, spin, a);
+    changes.work[TALLY_FRICTION] += w * area * fr.cap(v + C::TAU, sigma, a);
+    for (int k = 0; k < 3; k++) tau[k] = v[C::TAU + k];
+  }
+  const double tau2 = C::dot(tau, tau);
+  double visc[3] = {0.0, 0.0, 0.0};
+  if (fr.eta > 0.0 && update->whichflag == 1) {    // velocities mean nothing to a minimizer
+    // the velocity of j's contact point relative to i's, tangential part
+    double **vel = atom->v, **omega = atom->omega;
+    const double qi = r * ri / (ri + rj), qj = r - qi;
+    double wi[3], wj[3];
+    C::cross(omega[i], n, wi);
+    C::cross(omega[j], n, wj);
+    double vr[3];
+    for (int k = 0; k < 3; k++) vr[k] = vel[j][k] - vel[i][k] - qj * wj[k] - qi * wi[k];
+    const double vn = C::dot(vr, n);
+    for (int k = 0; k < 3; k++) visc[k] = fr.eta * (vr[k] - vn * n[k]);
+    if (spin) changes.work[TALLY_FRICTION] += w * area * C::dot(visc, visc) / fr.eta * update->dt;
+  }
+  for (int k = 0; k < 3; k++) {
+    ft[k] = area * (tau[k] + visc[k]);
+    fi[k] = area * sigma * n[k] + ft[k];
+  }
+  if (eflag_either) evdwl = area * (0.5 * a * overlap * overlap + 0.5 * tau2 / a);
+
+  // welding: the pair links where it is, with the contact's stresses (no jump of the pair's
+  // force or energy; the many-body term gains the link: manybody_changes)
+  if (fr.weld > 0.0 && -sigma >= fr.weld && linkable(type[i], type[j])) {
+    v[C::REF] = ri + rj;
+    v[C::AREA] = area;
+    v[C::KAPPA] = v[C::EPL] = 0.0;
+    word = state_word(kept_word(word, false), 1, trial);
+    changes.formed += w;
+    if (responds && setting.manybody) {
+      const double dv = area * overlap;
+      dtheta[i][0] += dv * aj / (ai + aj);
+      if (force->newton_pair || j < atom->nlocal) dtheta[j][0] += dv * ai / (ai + aj);
+    }
+  }
+}
+
+/* ----------------------------------------------------------------------
+   the many-body energy the changes of this step take: theta_i moves by the
+   changes of state (column 0: breaking, welding), damage (1) and plastic
+   flow (2); lambda_i Omega_i theta_i^2 / 2 at the changed theta, less at
+   the old one, is tallied with each in that order
+------------------------------------------------------------------------- */
+
+void PairMCA::manybody_changes(StateTally &changes)
+{
+  comm_what = COMM_DTHETA;
+  if (force->newton_pair) comm->reverse_comm(this, 3);
+  const int *type = atom->type;
+  const double *theta = sums;
+  for (int i = 0; i < atom->nlocal; i++) {
+    const double omega = element_volume(i);
+    const double half = 0.5 * scaled[type[i]].lambda * omega;
+    double now = theta[i], e_now = half * now * now;
+    double released[3];
+    for (int c = 0; c < 3; c++) {
+      now += dtheta[i][c] / omega;
+      const double e = half * now * now;
+      released[c] = e_now - e;
+      e_now = e;
+    }
+    changes.ejump += released[0];
+    changes.work[TALLY_DAMAGE] += released[1];
+    changes.work[TALLY_PLASTIC] += released[2];
   }
 }
 
@@ -399,9 +628,21 @@ void PairMCA::coeff(int narg, char **arg)
   int ilo, ihi, jlo, jhi;
   type_range(who, "I", arg[0], atom->ntypes, ilo, ihi, lmp);
   type_range(who, "J", arg[1], atom->ntypes, jlo, jhi, lmp);
+  // link yes|no (last): whether elements of types I and J link when they touch
+  if (narg >= 4 && strcmp(arg[narg - 2], "link") == 0) {
+    const std::string v = arg[narg - 1];
+    if (v != "yes" && v != "no")
+      error->all(FLERR, "{}: link must be yes or no (got '{}')", who, v);
+    const int np1 = atom->ntypes + 1;
+    for (int i = ilo; i <= ihi; i++)
+      for (int j = jlo; j <= jhi; j++) unlinkable[i * np1 + j] = unlinkable[j * np1 + i] = v == "no";
+    narg -= 2;
+    if (narg == 2) return;
+  }
   if (ilo != jlo || ihi != jhi)
     error->all(FLERR, "{}: a material belongs to an element type: give pair_coeff I I (got {} "
-               "{}); a pair of two types takes each element's own", who, arg[0], arg[1]);
+               "{}); a pair of two types takes each element's own (pair_coeff I J link yes|no "
+               "sets whether they link)", who, arg[0], arg[1]);
   const McaMaterial m = McaMaterial::read(who, narg - 2, arg + 2, lmp);
   for (int i = ilo; i <= ihi; i++) {
     material[i] = m;
@@ -412,13 +653,11 @@ void PairMCA::coeff(int narg, char **arg)
 // the moduli in energy/volume (pressure units / nktv2p), as the kernel uses them
 void PairMCA::scale_materials()
 {
-  const double p2e = 1.0 / force->nktv2p;
-  scaled = material;
-  for (McaMaterial &m : scaled) {
-    m.bulk *= p2e;
-    m.shear *= p2e;
-    m.lambda *= p2e;
-    m.strength *= p2e;
+  scaled.clear();
+  responds = 0;
+  for (const McaMaterial &m : material) {
+    scaled.push_back(m.scaled(1.0 / force->nktv2p));
+    if (m.strength > 0.0 || m.yield > 0.0 || m.weld > 0.0) responds = 1;
   }
 }
 
@@ -440,6 +679,7 @@ void PairMCA::init_style()
 
   guard.init();
   scale_materials();
+  plasticity.init(material);
   neighbor->add_request(this, NeighConst::REQ_HISTORY);
   state.init();
 }
@@ -464,10 +704,14 @@ void PairMCA::transfer_history(double *source, double *target, int, int)
 {
   target[C::REF] = source[C::REF];
   target[C::AREA] = source[C::AREA];
+  target[C::KAPPA] = source[C::KAPPA];
+  target[C::EPL] = source[C::EPL];
+  target[C::SIG] = source[C::SIG];
   for (int k = 0; k < 3; k++) {
     target[C::TAU + k] = -source[C::TAU + k];
     target[C::DPREV + k] = -source[C::DPREV + k];
   }
+  state.transfer_word(source, target);
 }
 
 void *PairMCA::extract(const char *name, int &dim)
@@ -486,6 +730,7 @@ void PairMCA::write_restart(FILE *fp)
     fwrite(&material_set[i], sizeof(int), 1, fp);
     material[i].write_restart(fp);
   }
+  fwrite(unlinkable.data(), sizeof(int), unlinkable.size(), fp);
 }
 
 void PairMCA::read_restart(FILE *fp)
@@ -497,6 +742,9 @@ void PairMCA::read_restart(FILE *fp)
     MPI_Bcast(&material_set[i], 1, MPI_INT, 0, world);
     material[i].read_restart(fp, lmp);
   }
+  if (comm->me == 0)
+    utils::sfread(FLERR, unlinkable.data(), sizeof(int), unlinkable.size(), fp, nullptr, error);
+  MPI_Bcast(unlinkable.data(), unlinkable.size(), MPI_INT, 0, world);
 }
 
 void PairMCA::write_restart_settings(FILE *fp)
@@ -512,38 +760,68 @@ void PairMCA::read_restart_settings(FILE *fp)
   state.read_restart(fp);
 }
 
+// link no of a type with itself rides on its line; of two types only in write_data ... pair ij
 void PairMCA::write_data(FILE *fp)
 {
-  for (int i = 1; i <= atom->ntypes; i++) fmt::print(fp, "{} {}\n", i, material[i].words());
+  const int np1 = atom->ntypes + 1;
+  for (int i = 1; i < np1; i++)
+    fmt::print(fp, "{} {}{}\n", i, material[i].words(), linkable(i, i) ? "" : " link no");
+  for (int i = 1; i < np1; i++)
+    for (int j = i + 1; j < np1; j++)
+      if (!linkable(i, j) && comm->me == 0)
+        error->warning(FLERR, "Pair mca: write_data keeps 'pair_coeff {} {} link no' only with "
+                       "the keyword pair ij", i, j);
 }
 
 void PairMCA::write_data_all(FILE *fp)
 {
-  for (int i = 1; i <= atom->ntypes; i++)
-    fmt::print(fp, "{} {} {}\n", i, i, material[i].words());
+  const int np1 = atom->ntypes + 1;
+  for (int i = 1; i < np1; i++)
+    for (int j = i; j < np1; j++) {
+      if (i == j) fmt::print(fp, "{} {} {}{}\n", i, i, material[i].words(), linkable(i, i) ? "" : " link no");
+      else fmt::print(fp, "{} {} link {}\n", i, j, linkable(i, j) ? "yes" : "no");
+    }
 }
 
 /* ---------------------------------------------------------------------- */
 
 int PairMCA::pack_forward_comm(int n, int *list, double *buf, int, int *)
 {
-  for (int i = 0; i < n; i++) buf[i] = sums[list[i]];
-  return n;
+  int m = 0;
+  if (comm_what == COMM_RETURNED) {
+    for (int i = 0; i < n; i++) {
+      buf[m++] = returned[list[i]][0];
+      buf[m++] = returned[list[i]][1];
+    }
+  } else {
+    for (int i = 0; i < n; i++) buf[m++] = sums[list[i]];
+  }
+  return m;
 }
 
 void PairMCA::unpack_forward_comm(int n, int first, double *buf)
 {
-  for (int i = 0; i < n; i++) sums[first + i] = buf[i];
+  int m = 0;
+  if (comm_what == COMM_RETURNED) {
+    for (int i = first; i < first + n; i++) {
+      returned[i][0] = buf[m++];
+      returned[i][1] = buf[m++];
+    }
+  } else {
+    for (int i = first; i < first + n; i++) sums[i] = buf[m++];
+  }
 }
 
 int PairMCA::pack_reverse_comm(int n, int first, double *buf)
 {
   int m = 0;
-  if (comm_what == COMM_STRESS) {
-    for (int i = first; i < first + n; i++)
+  for (int i = first; i < first + n; i++) {
+    if (comm_what == COMM_STRESS)
       for (int k = 0; k < STRESS_COLUMNS; k++) buf[m++] = stress[i][k];
-  } else {
-    for (int i = first; i < first + n; i++) buf[m++] = sums[i];
+    else if (comm_what == COMM_DTHETA)
+      for (int k = 0; k < 3; k++) buf[m++] = dtheta[i][k];
+    else
+      buf[m++] = sums[i];
   }
   return m;
 }
@@ -551,15 +829,18 @@ int PairMCA::pack_reverse_comm(int n, int first, double *buf)
 void PairMCA::unpack_reverse_comm(int n, int *list, double *buf)
 {
   int m = 0;
-  if (comm_what == COMM_STRESS) {
-    for (int i = 0; i < n; i++)
-      for (int k = 0; k < STRESS_COLUMNS; k++) stress[list[i]][k] += buf[m++];
-  } else {
-    for (int i = 0; i < n; i++) sums[list[i]] += buf[m++];
+  for (int i = 0; i < n; i++) {
+    const int to = list[i];
+    if (comm_what == COMM_STRESS)
+      for (int k = 0; k < STRESS_COLUMNS; k++) stress[to][k] += buf[m++];
+    else if (comm_what == COMM_DTHETA)
+      for (int k = 0; k < 3; k++) dtheta[to][k] += buf[m++];
+    else
+      sums[to] += buf[m++];
   }
 }
 
 double PairMCA::memory_usage()
 {
-  return (double) nmax * (1 + STRESS_COLUMNS) * sizeof(double);
+  return (double) nmax * (1 + STRESS_COLUMNS + 2 + 3) * sizeof(double);
 }

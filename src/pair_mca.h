@@ -19,6 +19,7 @@ PairStyle(mca,PairMCA);
 #include "atom.h"
 #include "mca_guard.h"
 #include "mca_material.h"
+#include "mca_plasticity.h"
 #include "mca_settings.h"
 #include "pair.h"
 #include "pair_state.h"
@@ -62,29 +63,50 @@ namespace ClusterDyn {
       return stress_step == update->ntimestep && stress_nlocal == atom->nlocal ? stress : nullptr;
     }
     double element_volume(int i) const;
+    // the equivalent plastic strain of my elements, or null (no material yields)
+    const double *plastic_strain() const { return plasticity.plastic_strain(); }
+
+    // pvector: broken links, links formed, the energy of those changes, then the energy
+    // dissipated by damage, by plastic flow and by friction (all since the links were made)
+    enum { TALLY_DAMAGE = 0, TALLY_PLASTIC = 1, TALLY_FRICTION = 2, NWORK = 3 };
 
    private:
     McaSettings setting;
     std::vector<McaMaterial> material;    // per atom type, as given (pressure units)
     std::vector<McaMaterial> scaled;      // the same in energy/volume
     std::vector<int> material_set;
+    std::vector<int> unlinkable;          // per type pair (i * (ntypes + 1) + j): never link
     McaGuard guard;                       // checks; the largest radius per type
+    McaPlasticity plasticity;
     PairState state;
+    int responds;                         // a material breaks, damages, yields or welds
     // per atom, the sum of one pass over the pairs: at a setup the linked pairs (make_links),
     // then the volumetric strain theta (volumetric_strain, used by the forces)
     double *sums;
     double **stress;
+    // per atom: the plastic factor phi and mean stress (plasticity); the changes of the
+    // volumetric strain made by this step's changes of state, damage and plastic flow
+    double **returned, **dtheta;
     int nmax, stress_wanted, stress_nlocal;
     bigint stress_step;
-    enum CommWhat { COMM_SUMS, COMM_STRESS } comm_what;
+    enum CommWhat { COMM_SUMS, COMM_STRESS, COMM_RETURNED, COMM_DTHETA } comm_what;
 
     void allocate();
     void scale_materials();
     void grow(int nall);
+    bool linkable(int itype, int jtype) const;
     void make_links(const StatePass &);
     void volumetric_strain(const StatePass &);
+    void plastic_trial(const StatePass &);
+    double linked_trial(int i, int j, double *v, const double *d, const double *n, double r,
+                        const double *spin) const;
     void pair_forces(const StatePass &, StateTally &);
+    void contact(int i, int j, int &word, double *v, const double *d, const double *n,
+                 double r, const double *spin, int trial, double w, StateTally &changes,
+                 double *fi, double *ft, double &evdwl);
+    void manybody_changes(StateTally &changes);
     void manybody_energy();
+    void stress_to_owners(bool to_pressure);
     [[noreturn]] void coincident(int i, int j) const;
   };
 

@@ -28,8 +28,8 @@ static Fix *create_fix_pair_state(LAMMPS *lmp, int narg, char **arg)
   return new FixPairState(lmp, narg, arg);
 }
 
-PairState::PairState(LAMMPS *lmp, Pair *owner_pair, const std::string &who, int nv) :
-    Pointers(lmp), pair(owner_pair), name(who), nvalues(nv), enabled(0), made_flag(0), afresh(0),
+PairState::PairState(LAMMPS *lmp, Pair *owner_pair, const std::string &who, int nv, int nw) :
+    Pointers(lmp), pair(owner_pair), name(who), nvalues(nv), nwork(nw), enabled(0), made_flag(0), afresh(0),
     fix(nullptr), pending_step(-1), trial_now(0)
 {
 }
@@ -107,7 +107,7 @@ void PairState::init()
                  "afresh", name, placeholder());
     (*modify->fix_map)["PAIR_STATE"] = &create_fix_pair_state;
     fix = dynamic_cast<FixPairState *>(modify->replace_fix(
-        placeholder(), fmt::format("{} all PAIR_STATE {}", FIX_ID, std::max(nvalues, 1)), 0));
+        placeholder(), fmt::format("{} all PAIR_STATE {}", FIX_ID, nvalues + 1), 0));
     modify->fix_map->erase("PAIR_STATE");
     fix->pair = pair;
     fix->owner = this;
@@ -137,6 +137,7 @@ StatePass PairState::begin()
   pass.values = fix->firstvalue;
   pass.fresh = update->setupflag ? fix->forward_saved_ids() : nullptr;
   pass.trial = trial_now;
+  pass.stride = nvalues + 1;
   return pass;
 }
 
@@ -150,12 +151,12 @@ void PairState::end(const StateTally &pass, double *tally_out)
   tally_out[0] = total.broken + pending.broken;
   tally_out[1] = total.formed + pending.formed;
   tally_out[2] = total.ejump + pending.ejump;
+  for (int k = 0; k < nwork; k++) tally_out[3 + k] = total.work[k] + pending.work[k];
 }
 
 void PairState::accept()
 {
-  if (!pending.any()) return;
-  settle_words(true);
+  if (pending.any()) settle_words(true);
   total.add(pending);
   pending = StateTally();
 }
@@ -163,8 +164,8 @@ void PairState::accept()
 void PairState::settle_before_save()
 {
   if (update->whichflag == 2 && pending_step != update->ntimestep) accept();
-  else if (pending.any()) {    // a line search's trial: it never happened
-    settle_words(false);
+  else {    // a line search's trial: it never happened
+    if (pending.any()) settle_words(false);
     pending = StateTally();
   }
 }
@@ -176,49 +177,63 @@ void PairState::settle_words(bool accept_trial)
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];
     for (int jj = 0; jj < list->numneigh[i]; jj++)
-      words[i][jj] = accept_trial ? state_now(words[i][jj]) : words[i][jj] & 1;
+      words[i][jj] = (words[i][jj] & WORD_KEPT) |
+                     (accept_trial ? state_now(words[i][jj]) : words[i][jj] & 1);
   }
 }
 
 StateView PairState::view() const
 {
   check_fix();
-  return StateView{pair->list, fix->firstflag, fix->firstvalue, nvalues};
+  return StateView{pair->list, fix->firstflag, fix->firstvalue, nvalues, nvalues + 1};
 }
 
 /* ---------------------------------------------------------------------- */
 
+// the tally as 3 + nwork numbers, and back
+static void tally_to(const StateTally &t, double *v, int nwork)
+{
+  v[0] = t.broken;
+  v[1] = t.formed;
+  v[2] = t.ejump;
+  for (int k = 0; k < nwork; k++) v[3 + k] = t.work[k];
+}
+
+static StateTally tally_from(const double *v, int nwork)
+{
+  StateTally t;
+  t.broken = v[0];
+  t.formed = v[1];
+  t.ejump = v[2];
+  for (int k = 0; k < nwork; k++) t.work[k] = v[3 + k];
+  return t;
+}
+
 void PairState::consolidate()
 {
-  double mine[3] = {total.broken, total.formed, total.ejump}, all[3];
-  MPI_Allreduce(mine, all, 3, MPI_DOUBLE, MPI_SUM, world);
-  total = StateTally();
-  if (comm->me == 0) {
-    total.broken = all[0];
-    total.formed = all[1];
-    total.ejump = all[2];
-  }
+  const int n = 3 + nwork;
+  double mine[3 + StateTally::MAXWORK], all[3 + StateTally::MAXWORK];
+  tally_to(total, mine, nwork);
+  MPI_Allreduce(mine, all, n, MPI_DOUBLE, MPI_SUM, world);
+  total = comm->me == 0 ? tally_from(all, nwork) : StateTally();
 }
 
 void PairState::write_restart(FILE *fp)
 {
   fwrite(&made_flag, sizeof(int), 1, fp);
-  const double sums[3] = {total.broken, total.formed, total.ejump};
-  fwrite(sums, sizeof(double), 3, fp);
+  double sums[3 + StateTally::MAXWORK];
+  tally_to(total, sums, nwork);
+  fwrite(sums, sizeof(double), 3 + nwork, fp);
 }
 
 void PairState::read_restart(FILE *fp)
 {
-  double sums[3] = {0.0, 0.0, 0.0};
+  double sums[3 + StateTally::MAXWORK] = {};
   if (comm->me == 0) {
     utils::sfread(FLERR, &made_flag, sizeof(int), 1, fp, nullptr, error);
-    utils::sfread(FLERR, sums, sizeof(double), 3, fp, nullptr, error);
+    utils::sfread(FLERR, sums, sizeof(double), 3 + nwork, fp, nullptr, error);
   }
   MPI_Bcast(&made_flag, 1, MPI_INT, 0, world);
-  total = StateTally();
-  if (comm->me == 0) {    // the totals stay on processor 0 (consolidate)
-    total.broken = sums[0];
-    total.formed = sums[1];
-    total.ejump = sums[2];
-  }
+  // the totals stay on processor 0 (consolidate)
+  total = comm->me == 0 ? tally_from(sums, nwork) : StateTally();
 }

@@ -12,7 +12,9 @@
    computes use (view()).
 
    A pair style calls begin() at the start of compute() and end() after
-   it; its kernel writes each pair's state word through state_word():
+   it; its kernel writes each pair's state word through state_word().  A
+   pair that is not linked may still keep its doubles (a contact's
+   friction): its word has the bit WORD_KEPT; a word of 0 keeps nothing.
    outside a minimization the word is the state; inside one, a trial point
    (a line-search evaluation) only marks its change (bit 1) and the change
    counts when the minimizer accepts the step (the next iteration, a save
@@ -38,14 +40,17 @@ namespace ClusterDyn {
   // the changes of the pair states (a pair with a ghost counts 1/2 with newton off, as
   // both processors see it)
   struct StateTally {
+    static constexpr int MAXWORK = 4;
     double broken = 0.0;    // pairs whose state went from 1 to 0
     double formed = 0.0;    // pairs whose state went from 0 to 1 during a run
     double ejump = 0.0;     // the sum of the pair-energy jumps of those changes
+    double work[MAXWORK] = {0.0, 0.0, 0.0, 0.0};    // energies the owner tallies (dissipation)
     void add(const StateTally &o)
     {
       broken += o.broken;
       formed += o.formed;
       ejump += o.ejump;
+      for (int k = 0; k < MAXWORK; k++) work[k] += o.work[k];
     }
     bool any() const { return broken != 0.0 || formed != 0.0; }
   };
@@ -54,22 +59,30 @@ namespace ClusterDyn {
   // (a pair of a fresh atom: no tally), remade during a run (tallied)
   enum Making { MAKE_NONE = 0, MAKE_INITIAL = 1, MAKE_AGAIN = 2 };
 
-  // a pair's state word: bit 0 = the state last accepted, bit 1 = a trial changed it
+  // a pair's state word: bit 0 = the state last accepted, bit 1 = a trial changed it,
+  // bit 2 = an unlinked pair that keeps its doubles
+  enum : int { WORD_KEPT = 4 };
   inline int state_now(int word)
   {
     return (word ^ (word >> 1)) & 1;
   }
   inline int state_word(int word, int now, int trial)
   {
-    return trial ? (word & 1) | ((now ^ (word & 1)) << 1) : now;
+    return (word & WORD_KEPT) | (trial ? (word & 1) | ((now ^ (word & 1)) << 1) : now);
+  }
+  inline int kept_word(int word, bool kept)
+  {
+    return kept ? word | WORD_KEPT : word & ~WORD_KEPT;
   }
 
   // what one force evaluation reads and writes
   struct StatePass {
     int *const *words;          // per neighbour pair of the pair style's list
-    double *const *values;      // nvalues doubles per neighbour pair
+    double *const *values;      // stride doubles per neighbour pair, nvalues of them the owner's
     const tagint *fresh;        // at a setup: per atom (own and ghost), 0 = fresh; else null
     int trial;                  // a minimizer's trial point: see state_word()
+    int stride;
+    double *pair_values(int i, int jj) const { return values[i] + stride * jj; }
   };
 
   // what the computes read: the state of pair jj of atom i is state_now(words[i][jj])
@@ -77,12 +90,13 @@ namespace ClusterDyn {
     const NeighList *list;
     int *const *words;          // null on a processor that has had no atoms
     double *const *values;
-    int nvalues;
+    int nvalues, stride;
   };
 
   class PairState : protected Pointers {
    public:
-    PairState(LAMMPS *, Pair *, const std::string &who, int nvalues);
+    // nwork: the owner's energy sums in StateTally::work, reported after the three counts
+    PairState(LAMMPS *, Pair *, const std::string &who, int nvalues, int nwork = 0);
     ~PairState();
 
     static constexpr const char *FIX_ID = "NEIGH_HISTORY_LINK";
@@ -90,7 +104,13 @@ namespace ClusterDyn {
     bool on() const { return enabled; }
     void init();               // init_style(): the fix replaces its placeholder
     StatePass begin();         // start of compute()
-    void end(const StateTally &pass, double *tally_out);    // tally_out: 3 values (pvector)
+    void end(const StateTally &pass, double *tally_out);    // tally_out: 3 + nwork (pvector)
+    // the default transfer of a pair's doubles to the partner negates them: a pair style with
+    // its own transfer_history() copies the word's slot with this
+    void transfer_word(const double *source, double *target) const
+    {
+      target[nvalues] = source[nvalues];
+    }
     bool made() const { return made_flag; }
     StateView view() const;
     const char *who() const { return name.c_str(); }
@@ -104,7 +124,7 @@ namespace ClusterDyn {
    private:
     Pair *pair;
     std::string name;          // the pair style, for messages
-    int nvalues;
+    int nvalues, nwork;
     int enabled, made_flag;
     int afresh;                // re-issued before the fix was made: forget restored links
     FixPairState *fix;         // null until the first init

@@ -1,0 +1,57 @@
+/* ----------------------------------------------------------------------
+   Cluster-dynamics plugin for LAMMPS: von Mises plasticity of movable
+   cellular automata (mca_plasticity.h).
+------------------------------------------------------------------------- */
+
+#include "mca_plasticity.h"
+
+#include "atom.h"
+#include "modify.h"
+
+#include <cmath>
+
+using namespace LAMMPS_NS;
+using namespace ClusterDyn;
+
+void McaPlasticity::init(const std::vector<McaMaterial> &materials)
+{
+  for (const McaMaterial &m : materials)
+    if (m.yield > 0.0) on = true;
+  if (on && !modify->get_fix_by_id(FIX_ID))
+    modify->add_fix(fmt::format("{} all property/atom d_{} ghost yes", FIX_ID, NAME));
+}
+
+double *McaPlasticity::strain_array() const
+{
+  int flag, cols;
+  const int index = atom->find_custom(NAME, flag, cols);
+  return index < 0 || flag != 1 || cols != 0 ? nullptr : atom->dvector[index];
+}
+
+const double *McaPlasticity::plastic_strain() const
+{
+  return on ? strain_array() : nullptr;
+}
+
+void McaPlasticity::return_map(double *const *stress, const std::vector<McaMaterial> &scaled,
+                               double *const *out) const
+{
+  double *eps_p = strain_array();
+  const int *type = atom->type;
+  for (int i = 0; i < atom->nlocal; i++) {
+    const double *s = stress[i];
+    const McaMaterial &m = scaled[type[i]];
+    const double mean = (s[0] + s[1] + s[2]) / 3.0;
+    out[i][0] = 1.0;
+    out[i][1] = mean;
+    if (m.yield == 0.0) continue;
+    const double dxx = s[0] - mean, dyy = s[1] - mean, dzz = s[2] - mean;
+    const double sint = sqrt(1.5 * (dxx * dxx + dyy * dyy + dzz * dzz +
+                                    2.0 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5])));
+    const double yield_now = m.yield + m.hardening * eps_p[i];
+    if (sint <= yield_now) continue;
+    const double deps = (sint - yield_now) / (3.0 * m.shear + m.hardening);
+    eps_p[i] += deps;
+    out[i][0] = (yield_now + m.hardening * deps) / sint;
+  }
+}

@@ -1,0 +1,52 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   Cluster-dynamics plugin for LAMMPS: von Mises plasticity of movable
+   cellular automata at the element (Psakhie 2013): where an element's
+   stress intensity sigma_int = sqrt(3/2 s:s) (s the deviator of its
+   stress by Love's formula) exceeds its yield stress sigma_y + H eps_p,
+   the deviatoric parts of its pair stresses are scaled by
+       phi = (sigma_y + H d eps_p) / sigma_int,   d eps_p = (sigma_int - sigma_y) / (3 G + H)
+   (radial return).  The equivalent plastic strain eps_p of each element
+   is a per-atom property (fix property/atom MCA_PLASTIC_STRAIN, created
+   here as fix granular/mdr creates its own): it moves with its element and
+   goes into restart files.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_CLUSTERDYN_MCA_PLASTICITY_H
+#define LMP_CLUSTERDYN_MCA_PLASTICITY_H
+
+#include "mca_material.h"
+
+#include "pointers.h"
+
+#include <vector>
+
+namespace LAMMPS_NS {
+namespace ClusterDyn {
+
+  class McaPlasticity : protected Pointers {
+   public:
+    static constexpr const char *FIX_ID = "MCA_PLASTIC_STRAIN";
+    static constexpr const char *NAME = "mca_plastic_strain";
+
+    explicit McaPlasticity(LAMMPS *lmp) : Pointers(lmp), on(false) {}
+    // a material that yields: the per-element plastic strain (made once, kept after)
+    void init(const std::vector<McaMaterial> &materials);
+    bool active() const { return on; }
+
+    // stress: Love's stress of my elements (energy/volume, xx yy zz xy xz yz) from their
+    // linked pairs; out: per element phi and the mean stress; eps_p of my elements grows
+    void return_map(double *const *stress, const std::vector<McaMaterial> &scaled,
+                    double *const *out) const;
+
+    // the plastic strain of my elements, or null (no material yields)
+    const double *plastic_strain() const;
+
+   private:
+    bool on;
+    double *strain_array() const;
+  };
+
+}    // namespace ClusterDyn
+}    // namespace LAMMPS_NS
+
+#endif
