@@ -545,20 +545,20 @@ def test_reissued_after_read_restart_links_afresh(tmp_path):
     assert "linked afresh" in out
 
 
-def test_compute_follows_the_pair_style_and_the_atoms():
+def test_compute_follows_the_pair_style_and_the_atoms(tmp_path):
     """compute mca/atom after the pair style changed, or after atoms were added since the last
     force evaluation: a clear error, not stale values."""
     with session() as lmp:
         lmp.commands_string(HOT_BLOCK.format(newton="on", dt=0.02))
         lmp.commands_list(["compute s all mca/atom", "run 0", "create_atoms 1 single 0.3 0.3 0.3"])
         with pytest.raises(Exception, match="not current"):
-            lmp.command("write_dump all custom d.txt id c_s[1]")
+            lmp.command(f"write_dump all custom {tmp_path / 'd.txt'} id c_s[1]")
     with session() as lmp:
         lmp.commands_string(HOT_BLOCK.format(newton="on", dt=0.02))
         lmp.commands_list(["compute s all mca/atom", "run 0", "pair_style zero 1.0",
                            "pair_coeff * *"])
         with pytest.raises(Exception, match="needs pair_style mca"):
-            lmp.command("write_dump all custom d.txt id c_s[1]")
+            lmp.command(f"write_dump all custom {tmp_path / 'd.txt'} id c_s[1]")
 
 
 def test_thin_periodic_box_refused():
