@@ -220,6 +220,9 @@ def test_plastic_block_yields_at_sigma_y(hardening):
             lmp.command("run 2000")
             rows.append([lmp.extract_variable(n) for n in ("ex", "ey", "sxx", "syy")])
         work = tally(lmp)
+        lmp.commands_list(["compute ep all property/atom d_mca_plastic_strain",
+                           "compute epm all reduce ave c_ep", "run 0"])
+        eps_p = lmp.extract_compute("epm", LMP_STYLE_GLOBAL, 0)
     ex, ey, sxx, syy = np.array(rows).T
     flow = sxx - syy            # compression positive: the von Mises stress of (sxx, syy, syy)
     if hardening == 0.0:
@@ -230,6 +233,9 @@ def test_plastic_block_yields_at_sigma_y(hardening):
     nu_inc = -(ey[-1] - ey[-5]) / (ex[-1] - ex[-5])
     assert 0.42 < nu_inc < 0.5, nu_inc
     assert work[4] > 0.0
+    # the elements' equivalent plastic strain (per-atom property): for a uniaxial isochoric
+    # flow it equals the axial plastic strain
+    assert 0.5 * abs(ex[-1]) < eps_p < 1.5 * abs(ex[-1]), (eps_p, ex[-1])
 
 
 # ---------------------------------------------------------------- welding, bad input
