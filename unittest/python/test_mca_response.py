@@ -240,16 +240,27 @@ def test_plastic_block_yields_at_sigma_y(hardening):
 
 # ---------------------------------------------------------------- welding, bad input
 
-def test_pressed_contact_welds_and_then_holds_tension():
-    """An unlinked dimer (link no at the first setup, then allowed) pushed together until its
-    pressure passes the weld stress links (one link formed) and then holds in tension."""
+@pytest.mark.parametrize("units", ["lj", "si"])
+def test_pressed_contact_welds_and_then_holds_tension(units):
+    """An unlinked dimer (apart at the first setup) pushed together until its pressure passes
+    the weld stress (pressure units of each style) links (one link formed); short of it, it
+    does not; welded, it holds in tension."""
+    radius, g = SCALE[units]
+    k = 2.5 * g
+    weld = 0.01 * g
     with session() as lmp:
-        dimer(lmp, "lj", 1.0, (2.5, 1.0), gap=0.05,
-              extra=["pair_coeff 1 1 bulk 2.5 shear 1.0 weld 0.01", "compute pp all pair mca",
+        dimer(lmp, units, radius, (k, g), gap=0.05 * radius,
+              extra=[f"pair_coeff 1 1 bulk {k} shear {g} weld {weld}", "compute pp all pair mca",
                      "group two id 2"])
-        lmp.commands_list(["displace_atoms two move -0.1 0 0 units box", "run 0"])
+        # the contact's stress a |overlap| (a = G / R for equal elements) against the weld stress
+        overlap = weld / g * radius
+        lmp.commands_list([f"displace_atoms two move {-0.05 * radius - 0.9 * overlap} 0 0 "
+                           "units box", "run 0"])
+        assert tally(lmp)[1] == 0
+        lmp.commands_list([f"displace_atoms two move {-0.2 * overlap} 0 0 units box", "run 0"])
         assert tally(lmp)[1] == 1
-        lmp.commands_list(["displace_atoms two move 0.2 0 0 units box", "run 0"])
+        lmp.commands_list([f"displace_atoms two move {0.05 * radius + 1.1 * overlap} 0 0 "
+                           "units box", "run 0"])
         f, _ = forces(lmp)
         assert f[0, 0] > 0.0                     # pulled towards the partner: linked
 
