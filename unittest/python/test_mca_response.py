@@ -175,46 +175,59 @@ def test_block_on_an_incline_slides_at_g_sin_minus_mu_cos():
 # ---------------------------------------------------------------- plasticity
 
 PLASTIC_BLOCK = """
-units lj
+units {units}
 atom_style sphere
 boundary p p p
 comm_modify vel yes
-lattice fcc $(sqrt(2.0))
+variable d equal {d}
+variable E equal {E}
+variable tau equal {tau}
+variable M equal {rho}*v_d^3
+{lattice}
 region box block 0 4 0 4 0 4
 create_box 1 box
 create_atoms 1 box
-set group all diameter 1.0
+set group all diameter ${{d}}
 variable phi equal PI/sqrt(18.0)
 pair_style mca fraction ${{phi}}
-pair_coeff 1 1 young 1.0 poisson 0.3 yield {Y} hardening {H}
-set group all density $(1.0/v_phi)
-neighbor 0.2 bin
-timestep 0.02
+pair_coeff 1 1 young ${{E}} poisson 0.3 yield $({Y}*v_E) hardening $({H}*v_E)
+set group all density $({rho}/v_phi)
+neighbor $(0.2*v_d) bin
+timestep $(0.02*v_tau)
 fix move all nve/sphere
-fix damp all viscous 0.5
+fix damp all viscous $(0.5*v_M/v_tau)
 compute pp all pair mca
 run 0
 variable lx0 equal $(lx)
 variable ly0 equal $(ly)
 variable ex equal ln(lx/v_lx0)
 variable ey equal ln(ly/v_ly0)
-variable sxx equal pxx
-variable syy equal pyy
-fix lat all press/berendsen y 0 0 0.5 z 0 0 0.5 couple none modulus 1.0 dilate all
-fix squeeze all deform 1 x erate -1.0e-4 remap x
+variable sxx equal pxx/v_E
+variable syy equal pyy/v_E
+fix lat all press/berendsen y 0 0 $(0.5*v_tau) z 0 0 $(0.5*v_tau) couple none modulus ${{E}} dilate all
+fix squeeze all deform 1 x erate $(-1.0e-4/v_tau) remap x
 """
+# units lj: diameter, E and density 1; units si: aluminium-like elements of 10 um (time
+# scale d sqrt(rho / E)); the yield stress and hardening modulus are given in units of E
+BLOCK_UNITS = {
+    "lj": dict(units="lj", d=1.0, E=1.0, rho=1.0, tau=1.0, lattice="lattice fcc $(sqrt(2.0))"),
+    "si": dict(units="si", d=1.0e-5, E=7.0e10, rho=2700.0, tau=1.0e-5 * math.sqrt(2700.0 / 7.0e10),
+               lattice="lattice fcc $(sqrt(2.0)*v_d)"),
+}
 
 
-@pytest.mark.parametrize("hardening", [0.0, 0.1])
-def test_plastic_block_yields_at_sigma_y(hardening):
+@pytest.mark.parametrize("units,hardening", [("lj", 0.0), ("lj", 0.1), ("si", 0.0)])
+def test_plastic_block_yields_at_sigma_y(units, hardening):
     """A periodic fcc block (E 1, nu 0.3, yield 0.005) compressed along x at a strain rate of
-    1e-4, its sides held stress free (fix press/berendsen): the flow stress by LAMMPS's
+    1e-4, its sides held stress free (fix press/berendsen; in lj and in si units with the
+    stresses in units of E): the flow stress by LAMMPS's
     pressure tensor is the yield stress within 3 % (perfectly plastic) or Y + H' eps_p with
     the hardening; plastic work is tallied.  The incremental Poisson ratio in the plateau is
     0.44 to 0.47 as measured (0.5 for an isochoric flow: doc/pair_mca.rst, plasticity)."""
     y = 0.005
     with session() as lmp:
-        lmp.commands_list(PLASTIC_BLOCK.format(Y=y, H=hardening).strip().splitlines())
+        lmp.commands_list(PLASTIC_BLOCK.format(Y=y, H=hardening, **BLOCK_UNITS[units])
+                          .strip().splitlines())
         rows = []
         for _ in range(12):
             lmp.command("run 2000")
