@@ -10,7 +10,8 @@ from lammps.formats import AvgChunkFile
 class XT:
     """x-t data of fix ave/chunk (norm sample): per column an array (layer, record); empty
     layers are NaN.  pressure = number density x mean per-atom virial (-trace of stress/atom
-    virial / 3): the virial pressure, without the flow term."""
+    virial / 3): the virial pressure, without the flow term; None where the file has no
+    v_wvir."""
 
     def __init__(self, path, dt):
         data = AvgChunkFile(path)
@@ -26,7 +27,8 @@ class XT:
         names = data.chunks[0].keys()
         self.density = column("density/mass")
         self.velocity = column(next(n for n in names if n in ("vx", "vy", "vz")))
-        self.pressure = column("density/number") * column("v_wvir")
+        self.pressure = (column("density/number") * column("v_wvir") if "v_wvir" in names
+                         else None)
         self.dust = column("c_dust[3]") if "c_dust[3]" in names else None
 
 

@@ -75,14 +75,3 @@ def test_brazilian_disc_splits_along_the_loaded_diameter(tmp_path):
     lost = (first[:, 6] - after[:, 6] > 0) & disc
     assert lost.sum() > 20
     assert np.mean(np.abs(first[lost, 2]) < 5.0) > 0.6
-
-
-@pytest.mark.parametrize("speed,spall", [(100.0, 0), (400.0, 1)])
-def test_aluminium_plate_spalls_above_the_acoustic_threshold(tmp_path, speed, spall):
-    """examples/mca-spall/in.plate with elements (units si, aluminium, spall strength
-    1.2 GPa): the target holds at 100 m/s, where the acoustic tension 1/2 rho c0 v = 0.86 GPa
-    stays below the strength, and spalls (two large fragments) at 400 m/s (3.5 GPa)."""
-    path = os.path.join(HERE, "..", "..", "examples", "mca-spall", "in.plate")
-    text = open(path).read().replace("clusterdynplugin.so", PLUGIN)
-    out = run_lmp(tmp_path, text, args=["-var", "v", str(speed), "-var", "records", "0"])
-    assert f"spall: {spall}" in out

@@ -1,0 +1,274 @@
+#!/usr/bin/python3
+"""The aluminium plate impact of in.plate with three mesoscale methods side by side: movable
+cellular automata (pair_style mca), peridynamics (pair_style peri/lps) and cluster dynamics
+(examples/spall/in.spall with the aluminium clusters of the dusting paper, on the same plates:
+5 x 5 cells across).  For each method: the spall threshold (ensembles of 3 seeds, 1 m/s thermal
+start), the free-surface velocity history with its pull-back and the spall strength read from
+it (the analysis of examples/spall: 1/2 rho0 c0 dU), the target's fragments and the run time
+per microsecond of physical time.  Writes comparison.md and plate.png; runs in runs/ (a
+finished run is read again; delete its folder to run it again).  About 30 minutes on one core.
+
+    source ../../build/env.sh; /usr/bin/python3 run_plate.py
+"""
+import json
+import math
+import os
+import sys
+import time
+
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.dirname(HERE))
+from lammps_driver import script  # noqa: E402
+from shock_records import XT, pull_back  # noqa: E402
+
+RHO, K, G, SIGMA = 2700.0, 75.5e9, 26.1e9, 1.2e9      # aluminium, in.plate's defaults
+C_L = math.sqrt((K + 4.0 * G / 3.0) / RHO)             # longitudinal (uniaxial strain) speed
+VD = 1451.0                                            # al-cluster-10um: sqrt(2D/m)
+FLYER = 10 * math.sqrt(2.0) * 1e-5                     # 10 cells of sqrt(2) a, a = 10 um
+SEEDS = [1, 2, 3]
+METHODS = {  # label, speeds of the sweep (m/s)
+    "mca": ("movable cellular automata (pair mca)", list(range(80, 210, 10)) + [300, 400]),
+    "peri": ("peridynamics (pair peri/lps)", list(range(80, 210, 10)) + [300, 400]),
+    "cd": ("cluster dynamics (morse/spline, aluminium clusters)",
+           [400] + list(range(1200, 2300, 100))),
+}
+# the equivalent stress of mca's pairs at 45 degrees to the impact, per unit sigma_xx, in
+# uniaxial strain (sigma_yy = sigma_zz = lambda / (lambda + 2G) sigma_xx): the pairs that break
+LAMBDA = K - 2.0 * G / 3.0
+LATERAL = LAMBDA / (LAMBDA + 2.0 * G)
+PAIR45 = math.sqrt(((1 + LATERAL) / 2) ** 2 + 3 * ((1 - LATERAL) / 2) ** 2)
+
+
+def inputs(method, v, **var):
+    """The input script and its -var settings for an impact at v: in.plate, or for cluster
+    dynamics examples/spall/in.spall on the same plates (5 x 5 cells, v = ratio vd)."""
+    if method == "cd":
+        return (os.path.join(HERE, "..", "spall", "in.spall"),
+                {"pot": "al-cluster-10um", "cells": 5, "ratio": v / VD, **var})
+    return os.path.join(HERE, "in.plate"), {"method": method, "v": v, **var}
+
+
+def loop_time(workdir):
+    """LAMMPS's loop time of the last run in workdir/log.lammps (s)."""
+    return [float(line.split()[3]) for line in open(os.path.join(workdir, "log.lammps"))
+            if line.startswith("Loop time of")][-1]
+
+
+def folder(method, v, seed):
+    return os.path.join(HERE, "runs", f"{method}-v{v}-seed{seed}")
+
+
+def run(method, v, seed):
+    """One impact in runs/<method>-v<v>-seed<seed>; a summary dict (kept as result.json)."""
+    workdir = folder(method, v, seed)
+    summary = os.path.join(workdir, "result.json")
+    if os.path.exists(summary):
+        return json.load(open(summary))
+    os.makedirs(workdir, exist_ok=True)
+    start = time.time()
+    with script(*inputs(method, v, seed=seed, out="plate"), workdir, "log.lammps") as lmp:
+        r = {"spall": bool(lmp.extract_variable("spalled")),
+             "large": lmp.extract_variable("large"), "v": lmp.extract_variable("v"),
+             "c0": lmp.extract_variable("c0"), "dt": lmp.extract_global("dt"),
+             "steps": lmp.extract_variable("steps"), "natoms": lmp.get_natoms()}
+        parts = np.array(lmp.gather("c_parts", 1, 3)).reshape(-1, 3)
+        x = np.array(lmp.gather_atoms("x", 1, 3)).reshape(-1, 3)[:, 0]
+        if method == "peri":
+            damage = np.array(lmp.gather("c_damage", 1, 1))
+            x0 = np.array(lmp.gather("f_x0", 1, 1))
+    r["wall"] = time.time() - start
+    r["loop"] = loop_time(workdir)
+    target = parts[:, 1] > 0
+    big = target & (parts[:, 2] == 0)
+    ids, sizes = np.unique(parts[big, 0], return_counts=True)
+    r["fragments"] = sorted((sizes / target.sum()).tolist(), reverse=True)
+    r["dust"] = float(np.sum(target & (parts[:, 2] > 0)) / target.sum())
+    r["rear"] = 0.0
+    if method == "peri" and r["spall"]:    # the spalled layer: beyond the cut (in.plate)
+        planes = np.round((x0[target] - x0[target].min()) / 1e-5).astype(int)
+        mean = np.bincount(planes, damage[target]) / np.maximum(np.bincount(planes), 1)
+        mean[:4], mean[-4:] = 0.0, 0.0                 # a horizon inside the faces
+        r["rear"] = float(np.mean(planes > np.argmax(mean)))
+    elif len(ids) >= 2:        # the spalled layer: the large fragment furthest from the impact
+        rear = max(ids, key=lambda i: x[parts[:, 0] == i].mean())
+        r["rear"] = float(np.sum(parts[:, 0] == rear) / target.sum())
+    t, u = np.loadtxt(os.path.join(workdir, "plate.visar"), usecols=(1, 2), unpack=True)
+    c0 = C_L if method != "cd" else r["c0"]
+    tp, vp, tm, vm = pull_back(t, u, 2 * FLYER / c0)
+    r.update(t=t.tolist(), u=u.tolist(), peak=[tp, vp], low=[tm, vm], c0l=c0)
+    json.dump(r, open(summary, "w"))
+    return r
+
+
+TIMED = 400
+
+
+def timing(method):
+    """The best of 3 loop times of one impact at TIMED m/s without records (runs/timing-*)."""
+    best = None
+    for k in range(3):
+        workdir = os.path.join(HERE, "runs", f"timing-{method}-{k}")
+        summary = os.path.join(workdir, "result.json")
+        if not os.path.exists(summary):
+            os.makedirs(workdir, exist_ok=True)
+            with script(*inputs(method, TIMED, records=0), workdir, "log.lammps") as lmp:
+                r = {"dt": lmp.extract_global("dt"), "steps": lmp.extract_variable("steps"),
+                     "natoms": lmp.get_natoms()}
+            r["loop"] = loop_time(workdir)
+            json.dump(r, open(summary, "w"))
+        r = json.load(open(summary))
+        best = r if best is None or r["loop"] < best["loop"] else best
+    return best
+
+
+def xt(method, v, seed, r):
+    """The run's x-t records (the densities of peri/lps, whose per-particle mass is its
+    density, scaled to kg/m^3)."""
+    records = XT(os.path.join(folder(method, v, seed), "plate.xt"), r["dt"])
+    if method == "peri":
+        records.density *= 1e-5 ** 3
+    return records
+
+
+def rho0(method, r):
+    """The density of the plates: the material's (mca, peri); the clusters' (cd: fcc of a)."""
+    return RHO if method != "cd" else 2.338e-12 / (1e-5 ** 3 / math.sqrt(2.0))
+
+
+def acoustic_threshold(method):
+    """The impact speed at which the elastic tension 1/2 rho c v where the release waves meet
+    reaches the break criterion: mca, the 45-degree pairs' equivalent stress reaches sigma_c;
+    peri, the bonds along the impact stretch to s00 = sigma_sp / (K + 4G/3)."""
+    if method == "mca":
+        return 2 * SIGMA / PAIR45 / (RHO * C_L)
+    if method == "peri":
+        return 2 * SIGMA / (RHO * C_L)
+    return None
+
+
+def ms(values, digits=0):
+    values = np.asarray(values, dtype=float)
+    return f"{values.mean():.{digits}f} ± {values.std(ddof=1):.{digits}f}"
+
+
+def main():
+    results = {m: {v: [run(m, v, s) for s in SEEDS] for v in speeds}
+               for m, (_, speeds) in METHODS.items()}
+    out = ["# Aluminium plate impact: three mesoscale methods on one scene", "",
+           "Flyer 141 um, target 283 um, 71 um x 71 um periodic, particles of 10 um; "
+           f"ensembles of {len(SEEDS)} seeds (1 m/s thermal start), mean ± sd.", "",
+           "## Spall threshold", "",
+           "| method | particles | spall (runs of 3) at each impact speed (m/s) | threshold (m/s) | "
+           "expected (m/s) |", "|---|---|---|---|---|"]
+    thresholds = {}
+    for m, (label, speeds) in METHODS.items():
+        counts = [sum(r["spall"] for r in results[m][v]) for v in speeds]
+        # the lowest speed from which every run spalls
+        first = next(k for k in range(len(speeds)) if all(c == len(SEEDS) for c in counts[k:]))
+        below = speeds[first - 1] if first > 0 else None
+        thresholds[m] = (below, speeds[first])
+        acoustic = acoustic_threshold(m)
+        out.append(f"| {label} | {results[m][speeds[0]][0]['natoms']} | "
+                   + ", ".join(f"{v}: {c}" for v, c in zip(speeds, counts))
+                   + f" | {below}-{speeds[first]} | "
+                   + (f"{acoustic:.0f} (acoustic)" if acoustic else
+                      "1.2-1.25 vd = 1741-1814 (examples/spall, 2 x 2 cells)") + " |")
+    out += ["", "## Free-surface velocity, pull-back and spall strength", "",
+            "| method | impact (m/s) | peak U_fs (m/s) | pull-back dU (m/s) | "
+            "1/2 rho0 c0 dU (GPa) | largest tension of the layers, virial (GPa) | "
+            "spalled layer (share of the target) | large fragments (mca, cd) | dust (share) |",
+            "|---|---|---|---|---|---|---|---|---|"]
+    shown = {}
+    for m, (label, speeds) in METHODS.items():
+        top = thresholds[m][1]
+        for v in [s for s in speeds if s >= top][:1] + [s for s in speeds if s >= 2 * top][:1] \
+                + ([400] if m == "cd" else []):
+            runs = results[m][v]
+            dU = [r["peak"][1] - r["low"][1] for r in runs]
+            sigma = [0.5 * rho0(m, r) * r["c0l"] * d / 1e9 for r, d in zip(runs, dU)]
+            records = [xt(m, v, s, r) for s, r in zip(SEEDS, runs)]
+            tension = (ms([-np.nanmin(x.pressure) / 1e9 for x in records], 2)
+                       if records[0].pressure is not None else "-")
+            spalled = all(r["spall"] for r in runs)    # no pull-back without a spall
+            out.append(f"| {m} | {v} | {ms([r['peak'][1] for r in runs])} | "
+                       f"{ms(dU) if spalled else '-'} | {ms(sigma, 2) if spalled else '-'} | "
+                       f"{tension} | {ms([r['rear'] for r in runs], 2)} | "
+                       f"{ms([sum(f > 0.1 for f in r['fragments']) for r in runs], 1) if m != 'peri' else '-'} | "
+                       f"{ms([r['dust'] for r in runs], 3)} |")
+            shown.setdefault(m, []).append((v, runs[0], records[0]))
+    out += ["", "## Run time", "",
+            f"One impact at {TIMED} m/s without records, alone on one core, best of 3; the "
+            "simulated time is the gap's closing and 4 target transit times.", "",
+            "| method | particles | time step (ns) | steps | loop time (s) | physical time (ns) | "
+            "loop time per us of physical time (s) | us per particle-step |",
+            "|---|---|---|---|---|---|---|---|"]
+    for m, (label, _) in METHODS.items():
+        r = timing(m)
+        out.append(f"| {label} | {r['natoms']} | {r['dt'] * 1e9:.3f} | {r['steps']:.0f} | "
+                   f"{r['loop']:.2f} | {r['steps'] * r['dt'] * 1e9:.0f} | "
+                   f"{r['loop'] / (r['steps'] * r['dt'] * 1e6):.1f} | "
+                   f"{r['loop'] / (r['steps'] * r['natoms']) * 1e6:.2f} |")
+    out += ["", f"{sum(len(s) for _, s in METHODS.values()) * len(SEEDS)} runs; their wall "
+            f"time {sum(r['wall'] for m in results for v in results[m] for r in results[m][v]) / 60:.0f} min "
+            f"(two at a time on two cores)."]
+    open(os.path.join(HERE, "comparison.md"), "w").write("\n".join(out) + "\n")
+    plot(results, shown, thresholds)
+    print("\n".join(out))
+
+
+def plot(results, shown, thresholds):
+    """Top: the free-surface velocity histories of each method (dots: the peak and the
+    pull-back minimum) and spall against impact speed; bottom: x-t diagrams of the velocity
+    at each method's first record speed."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, axes = plt.subplots(2, 4, figsize=(18, 8))
+    for k, (m, (label, speeds)) in enumerate(METHODS.items()):
+        ax = axes[0, k]
+        for v, r, _ in shown[m]:
+            t0 = r["t"][next(i for i, u in enumerate(r["u"]) if u > 0.5 * r["peak"][1])]
+            t = (np.array(r["t"]) - t0) * 1e9
+            line, = ax.plot(t, r["u"], lw=0.9, label=f"{v} m/s")
+            ax.plot([(r["peak"][0] - t0) * 1e9, (r["low"][0] - t0) * 1e9],
+                    [r["peak"][1], r["low"][1]], "o", color=line.get_color(), ms=4)
+        ax.set_xlim(-10, 80)
+        ax.set_xlabel("time from the shock's arrival (ns)")
+        ax.set_ylabel("free-surface velocity (m/s)")
+        ax.set_title(label, fontsize=9)
+        ax.legend(fontsize=8)
+        v, r, records = shown[m][0]
+        ax = axes[1, k]
+        image = ax.imshow(records.velocity.T, origin="lower", aspect="auto", cmap="RdBu_r",
+                          vmin=-v, vmax=v,
+                          extent=[records.x[0] * 1e6, records.x[-1] * 1e6,
+                                  records.t[0] * 1e9, records.t[-1] * 1e9])
+        fig.colorbar(image, ax=ax, label="velocity (m/s)")
+        filled = records.x[np.any(records.count > 0, axis=1)] * 1e6
+        ax.set_xlim(filled.min() - 10, filled.max() + 10)
+        ax.set_xlabel("x (um)")
+        ax.set_ylabel("time (ns)")
+        ax.set_title(f"{m}, {v} m/s: x-t velocity (blank: empty layers)", fontsize=9)
+    ax = axes[0, 3]
+    for m, (label, speeds) in METHODS.items():
+        share = [np.mean([r["spall"] for r in results[m][v]]) for v in speeds]
+        ax.plot(speeds, share, "o-", ms=3, label=m)
+    for m, colour in (("mca", "C0"), ("peri", "C1")):
+        ax.axvline(acoustic_threshold(m), ls=":", lw=0.8, color=colour)
+    ax.axvline(1.25 * VD, ls=":", lw=0.8, color="C2")
+    ax.set_xscale("log")
+    ax.set_xlabel("impact speed (m/s)")
+    ax.set_ylabel("share of runs that spall")
+    ax.set_title("spall against impact speed (dotted: the acoustic thresholds;\n"
+                 "cd: 1.25 vd from examples/spall)", fontsize=9)
+    ax.legend(fontsize=8)
+    axes[1, 3].axis("off")
+    fig.tight_layout()
+    fig.savefig(os.path.join(HERE, "plate.png"), dpi=70)
+    plt.close(fig)
+
+
+if __name__ == "__main__":
+    main()
