@@ -13,7 +13,9 @@
    by the spin of its contact, w = (q_ij omega_i + q_ji omega_j) / r; the
    stored tangential stress and last separation are turned by w dt before
    the new separation is compared with them, so that a rigid rotation makes
-   no stress.  Formulas: doc/pair_mca.rst.
+   no stress.  A link also carries a moment from the relative rotation of its
+   elements (bending and twisting of its contact area).  Formulas:
+   doc/pair_mca.rst.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_CLUSTERDYN_MCA_CONTACT_H
@@ -27,11 +29,15 @@ namespace ClusterDyn {
   struct McaContact {
     // a pair's doubles, seen from the list's atom i (the partner's copy has the vectors
     // negated: PairMCA::transfer_history)
-    enum { REF = 0, AREA = 1, TAU = 2, DPREV = 5, KAPPA = 8, EPL = 9, SIG = 10, NVALUES = 11 };
+    enum {
+      REF = 0, AREA = 1, TAU = 2, DPREV = 5, KAPPA = 8, EPL = 9, SIG = 10, ROT = 11,
+      NVALUES = 14
+    };
     // REF: the distance at linking (stress free); AREA: S_ij; TAU: the tangential stress on
     // i (3; effective, undamaged); DPREV: x_j - x_i at the last evaluation (3); KAPPA: the
     // largest effective equivalent stress (damage); EPL: the plastic elongation; SIG: the
-    // trial normal stress of this step (plasticity).  An unlinked contact uses TAU and DPREV.
+    // trial normal stress of this step (plasticity); ROT: the rotation of j relative to i (3),
+    // turned with the contact's spin as TAU.  An unlinked contact uses TAU and DPREV.
 
     static double half_stiffness(double shear, double radius) { return 2.0 * shear / radius; }
 
@@ -41,6 +47,18 @@ namespace ClusterDyn {
       return si > 0.0 && sj > 0.0 ? (si < sj ? si : sj) : (si > 0.0 ? si : sj);
     }
     static double series(double ai, double aj) { return ai * aj / (ai + aj); }
+
+    // the moment of a link (the review's K_ij) from the relative rotation rot of j against i:
+    // a circular contact of area S bends with the stiffness a I and twists with a J
+    // (I = S^2 / (4 pi), J = 2 I: the second moments of the area); m: the moment on i (its
+    // opposite acts on j); returns the energy
+    static double moment(const double *rot, const double *n, double a, double area, double *m)
+    {
+      const double bend = a * area * area / (4.0 * M_PI), twist = 2.0 * bend;
+      const double along = dot(rot, n);
+      for (int k = 0; k < 3; k++) m[k] = bend * (rot[k] - along * n[k]) + twist * along * n[k];
+      return 0.5 * (bend * (dot(rot, rot) - along * along) + twist * along * along);
+    }
 
     // the contact area an unlinked pair pushes through: a close-packed element's face
     // (sqrt(2) R^2 on fcc) for the harmonic mean radius
@@ -61,15 +79,39 @@ namespace ClusterDyn {
       c[2] = a[0] * b[1] - a[1] * b[0];
     }
 
+    // a turn by the rotation vector phi (angle |phi| about phi / |phi|), Rodrigues' formula;
+    // its cosine and sine are taken once for all the vectors it turns
+    struct Turn {
+      double k[3] = {0.0, 0.0, 0.0}, c = 1.0, s = 0.0;
+      bool none = true;
+      explicit Turn(const double *phi)
+      {
+        const double angle = sqrt(dot(phi, phi));
+        if (angle == 0.0) return;
+        for (int m = 0; m < 3; m++) k[m] = phi[m] / angle;
+        c = cos(angle);
+        s = sin(angle);
+        none = false;
+      }
+      void apply(double *v) const
+      {
+        if (none) return;
+        double kv[3];
+        cross(k, v, kv);
+        const double kdv = dot(k, v) * (1.0 - c);
+        for (int m = 0; m < 3; m++) v[m] = v[m] * c + kv[m] * s + k[m] * kdv;
+      }
+    };
+
     // the tangential stress after this step's slide: tau and the last separation dprev turn
     // with the contact's spin (null: they do not turn), tau is brought into the tangent plane
     // of n at its magnitude, then grows by a du_t, du_t the slide of the contact points
     static void slide(double *tau, double *dprev, const double *d, const double *n,
-                      const double *spin, double a)
+                      const Turn *turn, double a)
     {
-      if (spin) {
-        rotate(tau, spin);
-        rotate(dprev, spin);
+      if (turn) {
+        turn->apply(tau);
+        turn->apply(dprev);
       }
       const double du[3] = {d[0] - dprev[0], d[1] - dprev[1], d[2] - dprev[2]};
       // a stress left out of the new tangent plane (the pair turned otherwise than its
@@ -84,18 +126,6 @@ namespace ClusterDyn {
         tau[k] += a * (du[k] - dun * n[k]);
         dprev[k] = d[k];
       }
-    }
-
-    // v <- v turned by the rotation vector phi (angle |phi| about phi / |phi|), Rodrigues
-    static void rotate(double *v, const double *phi)
-    {
-      const double angle = sqrt(dot(phi, phi));
-      if (angle == 0.0) return;
-      const double k[3] = {phi[0] / angle, phi[1] / angle, phi[2] / angle};
-      double kv[3];
-      cross(k, v, kv);
-      const double c = cos(angle), s = sin(angle), kdv = dot(k, v) * (1.0 - c);
-      for (int m = 0; m < 3; m++) v[m] = v[m] * c + kv[m] * s + k[m] * kdv;
     }
   };
 

@@ -246,7 +246,7 @@ void PairMCA::volumetric_strain(const StatePass &pass)
 ------------------------------------------------------------------------- */
 
 double PairMCA::linked_trial(int i, int j, double *v, const double *d, const double *n,
-                             double r, const double *spin) const
+                             double r, const C::Turn *turn) const
 {
   const double *radius = atom->radius;
   const int *type = atom->type;
@@ -257,7 +257,7 @@ double PairMCA::linked_trial(int i, int j, double *v, const double *d, const dou
   double sigma = a * (r - v[C::REF] - v[C::EPL]);
   if (setting.manybody)
     sigma += (aj * mi.lambda * sums[i] + ai * mj.lambda * sums[j]) / (ai + aj);
-  C::slide(v + C::TAU, v + C::DPREV, d, n, spin, a);
+  C::slide(v + C::TAU, v + C::DPREV, d, n, turn, a);
   return sigma;
 }
 
@@ -293,7 +293,8 @@ void PairMCA::plastic_trial(const StatePass &pass)
       const double qi = r * radius[i] / (radius[i] + radius[j]), qj = r - qi;
       double spin[3];
       for (int k = 0; k < 3; k++) spin[k] = dt * (qi * omega[i][k] + qj * omega[j][k]) / r;
-      v[C::SIG] = linked_trial(i, j, v, d, n, r, moving ? spin : nullptr);
+      const C::Turn turn(spin);
+      v[C::SIG] = linked_trial(i, j, v, d, n, r, moving ? &turn : nullptr);
       const McaMaterial &mi = scaled[type[i]], &mj = scaled[type[j]];
       const double s = McaResponse::of_pair(mi.strength, mi.damage, mj.strength, mj.damage)
                            .intact(v[C::KAPPA]) * v[C::AREA];
@@ -335,8 +336,10 @@ void PairMCA::stress_to_owners(bool to_pressure)
    stored stress turned with the contact's spin first: mca_contact.h);
    plasticity scales the deviatoric parts by phi = min(phi_i, phi_j) about
    the mean stress of the two elements and stores the plastic elongation;
-   torques q_ij n x F_t on i and q_ji n x F_t on j; energy
-   (1 - D) S (a e^2 / 2 + |tau~|^2 / (2a)) per pair plus
+   torques q_ij n x F_t on i and q_ji n x F_t on j, and the moment of the
+   elements' relative rotation, (1 - D) K_ij on i and its opposite on j
+   (mca_contact.h); energy (1 - D) (S (a e^2 / 2 + |tau~|^2 / (2a)) + the
+   moment's) per pair plus
    lambda_i Omega_i theta_i^2 / 2 per element (manybody_energy).  From the
    stresses of this step (mca_response.h) a link that breaks transmits
    nothing from this step on; damage grows for the next one.
@@ -387,8 +390,9 @@ void PairMCA::pair_forces(const StatePass &pass, StateTally &changes)
       const double w = newton || j < nlocal ? 1.0 : 0.5;
       double spin[3];
       for (int k = 0; k < 3; k++) spin[k] = dt * (qi * omega[i][k] + qj * omega[j][k]) / r;
+      const C::Turn turn(spin);    // of the pair's stored vectors (when the elements move)
       double *v = pass.pair_values(i, jj);
-      double fi[3], ft[3], evdwl = 0.0;
+      double fi[3], ft[3], mom[3] = {0.0, 0.0, 0.0}, evdwl = 0.0;
 
       if (linked) {
         const McaResponse resp =
@@ -396,7 +400,7 @@ void PairMCA::pair_forces(const StatePass &pass, StateTally &changes)
         const double intact = resp.intact(v[C::KAPPA]);
         const double area = v[C::AREA];
         double *tau = v + C::TAU;
-        double sigma = plastic ? v[C::SIG] : linked_trial(i, j, v, d, n, r, moving ? spin : nullptr);
+        double sigma = plastic ? v[C::SIG] : linked_trial(i, j, v, d, n, r, moving ? &turn : nullptr);
         const double phi = plastic ? std::min(returned[i][0], returned[j][0]) : 1.0;
         if (phi < 1.0) {
           // radial return of the transmitted stresses about the elements' mean stress
@@ -415,9 +419,16 @@ void PairMCA::pair_forces(const StatePass &pass, StateTally &changes)
             if (newton || j < nlocal) dtheta[j][2] += dv * ai / (ai + aj);
           }
         }
+        double *rot = v + C::ROT;
+        if (moving) {
+          turn.apply(rot);
+          for (int k = 0; k < 3; k++) rot[k] += dt * (omega[j][k] - omega[i][k]);
+        }
+        double moment[3];
+        const double erot = C::moment(rot, n, a, area, moment);
         const double elong = r - v[C::REF] - v[C::EPL];
         const double tau2 = C::dot(tau, tau);
-        const double epair = area * (0.5 * a * elong * elong + 0.5 * tau2 / a);
+        const double epair = area * (0.5 * a * elong * elong + 0.5 * tau2 / a) + erot;
 
         // breaking (now) and damage (from the next step) at this step's stresses
         const double s = resp.active() ? McaResponse::equivalent(sigma, tau2) : 0.0;
@@ -442,10 +453,11 @@ void PairMCA::pair_forces(const StatePass &pass, StateTally &changes)
         for (int k = 0; k < 3; k++) {
           ft[k] = intact * area * tau[k];
           fi[k] = intact * area * sigma * n[k] + ft[k];
+          mom[k] = intact * moment[k];
         }
         if (eflag_either) evdwl = intact * epair;
       } else {
-        contact(i, j, word, v, d, n, r, moving ? spin : nullptr, pass.trial, w, changes, fi, ft,
+        contact(i, j, word, v, d, n, r, moving ? &turn : nullptr, pass.trial, w, changes, fi, ft,
                 evdwl);
       }
 
@@ -454,10 +466,10 @@ void PairMCA::pair_forces(const StatePass &pass, StateTally &changes)
       C::cross(n, ft, ti);
       for (int k = 0; k < 3; k++) {
         f[i][k] += fi[k];
-        torque[i][k] += qi * ti[k];
+        torque[i][k] += qi * ti[k] + mom[k];
         if (jown) {
           f[j][k] -= fi[k];
-          torque[j][k] += qj * ti[k];
+          torque[j][k] += qj * ti[k] - mom[k];
         }
       }
       if (evflag) ev_tally_xyz(i, j, nlocal, newton, evdwl, 0.0, fi[0], fi[1], fi[2], -d[0],
@@ -494,7 +506,7 @@ void PairMCA::pair_forces(const StatePass &pass, StateTally &changes)
 ------------------------------------------------------------------------- */
 
 void PairMCA::contact(int i, int j, int &word, double *v, const double *d, const double *n,
-                      double r, const double *spin, int trial, double w, StateTally &changes,
+                      double r, const C::Turn *turn, int trial, double w, StateTally &changes,
                       double *fi, double *ft, double &evdwl)
 {
   const double *radius = atom->radius;
@@ -515,7 +527,7 @@ void PairMCA::contact(int i, int j, int &word, double *v, const double *d, const
       for (int k = 0; k < 3; k++) v[C::DPREV + k] = d[k];
       word = kept_word(word, true);
     }
-    C::slide(v + C::TAU, v + C::DPREV, d, n, spin, a);
+    C::slide(v + C::TAU, v + C::DPREV, d, n, turn, a);
     changes.work[TALLY_FRICTION] += w * area * fr.cap(v + C::TAU, sigma, a);
     for (int k = 0; k < 3; k++) tau[k] = v[C::TAU + k];
   }
@@ -532,7 +544,7 @@ void PairMCA::contact(int i, int j, int &word, double *v, const double *d, const
     for (int k = 0; k < 3; k++) vr[k] = vel[j][k] - vel[i][k] - qj * wj[k] - qi * wi[k];
     const double vn = C::dot(vr, n);
     for (int k = 0; k < 3; k++) visc[k] = fr.eta * (vr[k] - vn * n[k]);
-    if (spin) changes.work[TALLY_FRICTION] += w * area * C::dot(visc, visc) / fr.eta * update->dt;
+    if (turn) changes.work[TALLY_FRICTION] += w * area * C::dot(visc, visc) / fr.eta * update->dt;
   }
   for (int k = 0; k < 3; k++) {
     ft[k] = area * (tau[k] + visc[k]);
@@ -546,6 +558,7 @@ void PairMCA::contact(int i, int j, int &word, double *v, const double *d, const
     v[C::REF] = ri + rj;
     v[C::AREA] = area;
     v[C::KAPPA] = v[C::EPL] = 0.0;
+    v[C::ROT] = v[C::ROT + 1] = v[C::ROT + 2] = 0.0;
     word = state_word(kept_word(word, false), 1, trial);
     changes.formed += w;
     if (responds && setting.manybody) {
@@ -710,6 +723,7 @@ void PairMCA::transfer_history(double *source, double *target, int, int)
   for (int k = 0; k < 3; k++) {
     target[C::TAU + k] = -source[C::TAU + k];
     target[C::DPREV + k] = -source[C::DPREV + k];
+    target[C::ROT + k] = -source[C::ROT + k];
   }
   state.transfer_word(source, target);
 }
@@ -749,12 +763,20 @@ void PairMCA::read_restart(FILE *fp)
 
 void PairMCA::write_restart_settings(FILE *fp)
 {
+  const int layout = C::NVALUES;    // a pair's doubles: restarts of another layout are refused
+  fwrite(&layout, sizeof(int), 1, fp);
   setting.write_restart(fp);
   state.write_restart(fp);
 }
 
 void PairMCA::read_restart_settings(FILE *fp)
 {
+  int layout = 0;
+  if (comm->me == 0) utils::sfread(FLERR, &layout, sizeof(int), 1, fp, nullptr, error);
+  MPI_Bcast(&layout, 1, MPI_INT, 0, world);
+  if (layout != C::NVALUES)
+    error->all(FLERR, "Pair mca: the restart file was written by another version of the plugin "
+               "(its pairs keep another state): start from a data file, the links are made anew");
   setting.read_restart(fp, lmp);
   state.enable();
   state.read_restart(fp);

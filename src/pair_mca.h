@@ -17,6 +17,7 @@ PairStyle(mca,PairMCA);
 #define LMP_CLUSTERDYN_PAIR_MCA_H
 
 #include "atom.h"
+#include "mca_contact.h"
 #include "mca_guard.h"
 #include "mca_material.h"
 #include "mca_plasticity.h"
@@ -99,11 +100,11 @@ namespace ClusterDyn {
     void volumetric_strain(const StatePass &);
     void plastic_trial(const StatePass &);
     double linked_trial(int i, int j, double *v, const double *d, const double *n, double r,
-                        const double *spin) const;
+                        const ClusterDyn::McaContact::Turn *turn) const;
     void pair_forces(const StatePass &, StateTally &);
     void contact(int i, int j, int &word, double *v, const double *d, const double *n,
-                 double r, const double *spin, int trial, double w, StateTally &changes,
-                 double *fi, double *ft, double &evdwl);
+                 double r, const ClusterDyn::McaContact::Turn *turn, int trial, double w,
+                 StateTally &changes, double *fi, double *ft, double &evdwl);
     void manybody_changes(StateTally &changes);
     void manybody_energy();
     void stress_to_owners(bool to_pressure);

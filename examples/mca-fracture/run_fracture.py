@@ -22,8 +22,8 @@ SEEDS = [1, 2, 3]
 
 
 def thermo(lmp_log):
-    """The thermo rows of a log, as an array (the runs with the last run's columns, one after
-    another)."""
+    """The thermo rows of a log (the runs with the last run's columns, one after another), as
+    an array."""
     rows, keys, header = [], None, None
     for line in open(lmp_log):
         words = line.split()
@@ -73,9 +73,9 @@ def run(name, inp, **var):
     return workdir, wall, extra
 
 
-def bar(packing, seed, steps, apart=0):
+def bar(packing, seed, steps):
     workdir, wall, _ = run(f"bar-{packing}-{seed}", "in.bar", packing=packing, seed=seed,
-                           steps=steps, apart=apart)
+                           steps=steps)
     th = thermo(os.path.join(workdir, "log.lammps"))
     last = open(os.path.join(workdir, "fragments.dump")).read().split("ITEM: ENTRIES")[-1]
     sizes = np.sort(np.array(last.split()[1:], dtype=float))[::-1]
@@ -106,7 +106,7 @@ def disc():
 def main():
     bars = {("fcc", 1): bar("fcc", 1, 40000)}
     for seed in SEEDS:
-        bars[("random", seed)] = bar("random", seed, 100000, apart=50000)
+        bars[("random", seed)] = bar("random", seed, 100000)
     d = disc()
 
     fig, ax = plt.subplots(2, 2, figsize=(11, 8.5))
@@ -116,7 +116,6 @@ def main():
                                                                     if packing == "random" else
                                                                     " [100]"))
     a.axhline(1.0, color="k", ls=":", lw=1)
-    a.set_xlim(0, 2.1)    # the random bars' pull-apart stage (to 12 %) lies beyond
     a.set_xlabel("strain between the grips (%)")
     a.set_ylabel("mean axial stress of the gauge / $\\sigma_c$")
     a.set_title("tension bars (n = 4, strain rate 1e-5)")

@@ -104,7 +104,9 @@ def test_dimer_normal(units, manybody):
 @pytest.mark.parametrize("units", UNITS)
 def test_dimer_shear_and_rotation(units):
     """Tangential displacement: force S a u on the pair, torques q n x F on both; a spinning
-    element: the contact point slides by R omega dt, and the torque opposes the spin."""
+    element: the contact point slides by R omega dt, and the torque opposes the spin; the
+    link's moment (the review's K_ij): bending a I and twisting a J of a circular contact
+    area S (I = S^2 / (4 pi), J = 2 I) times the relative rotation."""
     radius, g = SCALE[units]
     k = 2.0 * g
     with session() as lmp:
@@ -125,17 +127,36 @@ def test_dimer_shear_and_rotation(units):
         total = t.sum(axis=0) + np.cross(x, f).sum(axis=0)
         assert np.abs(total).max() <= 1e-9 * radius * ft
 
+    # element 1 spun about z (across the pair): the contact spins at spin/2, so 2's contact
+    # point slid by -R spin dt relative to 1's; and the link bends: 2 turned by -spin dt
+    # relative to 1, moment a I spin dt against the spin on 1 (I = S^2 / (4 pi), the second
+    # moment of a circular contact area)
+    ref, turn, f, t = spun_dimer(units, radius, (k, g), "0 0 {}")
+    slide = 2 * radius * math.sin(0.5 * turn)
+    assert f[0, 1] == pytest.approx(-ref.S * ref.a * slide, rel=1e-6)
+    bend = ref.a * ref.S ** 2 / (4 * math.pi) * turn
+    assert t[0, 2] == pytest.approx(-radius * ref.S * ref.a * slide - bend, rel=1e-6)
+    assert t[1, 2] == pytest.approx(-radius * ref.S * ref.a * slide + bend, rel=1e-6)
+    # spun about x (the pair's axis): nothing slides, the link twists, a J spin dt against
+    # the spin on 1 and the opposite on 2 (J = 2 I); no force
+    ref, turn, f, t = spun_dimer(units, radius, (k, g), "{} 0 0")
+    twist = ref.a * ref.S ** 2 / (2 * math.pi) * turn
+    assert t[0, 0] == pytest.approx(-twist, rel=1e-6)
+    assert t[1, 0] == pytest.approx(twist, rel=1e-6)
+    assert np.abs(f).max() <= 1e-9 * ref.S * ref.a * radius
+
+
+def spun_dimer(units, radius, moduli, omega):
+    """A linked dimer along x whose element 1 spins (omega: a template of its components) by
+    1e-4 per step, after one step: the reference, the turn spin dt, forces and torques."""
     with session() as lmp:
-        dimer(lmp, units, radius, (k, g))
+        dimer(lmp, units, radius, moduli)
         spin = 1.0e-4 / lmp.extract_global("dt")
-        lmp.commands_list(["group one id 1", f"set group one omega 0 0 {spin}", "run 1"])
-        ref = Dimer(radius, k, g, lmp.extract_global("nktv2p"))
-        dt = lmp.extract_global("dt")
+        lmp.commands_list(["group one id 1", "set group one omega " + omega.format(spin),
+                           "run 1"])
+        ref = Dimer(radius, *moduli, lmp.extract_global("nktv2p"))
         f, t = forces(lmp)
-        # the contact spins at spin/2: 2's contact point slid by -R spin dt relative to 1's
-        slide = 2 * radius * math.sin(0.5 * spin * dt)
-        assert f[0, 1] == pytest.approx(-ref.S * ref.a * slide, rel=1e-6)
-        assert t[0, 2] == pytest.approx(-radius * ref.S * ref.a * slide, rel=1e-6)
+        return ref, spin * lmp.extract_global("dt"), f, t
 
 
 @pytest.mark.parametrize("units", ["lj", "si"])
