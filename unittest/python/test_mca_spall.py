@@ -66,6 +66,18 @@ def test_elements_pull_back_shrinks_far_above_the_threshold(tmp_path):
     assert 0.5 * RHO * C_L * (vp - vm) < 0.4 * SIGMA
 
 
+def test_yielding_elements_read_their_spall_strength_from_the_pull_back(tmp_path):
+    """The same elements with a yield stress of 0.3 GPa: the release is elastic-plastic (an
+    elastic front, then the plastic release), so the tension where the release waves meet
+    builds up over time and the free surface sees the release until the target breaks: at
+    300 m/s, where the elastic elements read 0.3 GPa, 1/2 rho c_L dU gives the 1.2 GPa given
+    within 15 % (measured 1.18)."""
+    got, t, u, _ = plate(tmp_path, "mca", 300, **{"yield": 0.3e9})
+    tp, vp, tm, vm = pull_back(t, u, 2 * FLYER / C_L)
+    assert got == 1
+    assert 0.5 * RHO * C_L * (vp - vm) == pytest.approx(SIGMA, rel=0.15)
+
+
 def test_peridynamics_cuts_the_target_at_150_m_s(tmp_path):
     """peri/lps with the critical stretch sigma_sp / (K + 4G/3): at 150 m/s (above the acoustic
     threshold 139 m/s of the bonds along the impact) a layer of particles loses more than
