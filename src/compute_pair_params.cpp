@@ -250,6 +250,10 @@ void ComputePairParams::evaluate()
   v[17] = 1.35 * (rc - 1.0) * v0;
   v[18] = (rc - 1.0) * v0 / (2.0 * M_SQRT2);
   v[19] = lambda * v0;
+  // vd of the base law's depth, before a tail or shift (the papers' vd); a stock style's law
+  // is known only as it computes it
+  const double d0 = source ? -base->energy(a) : d;
+  v[20] = sqrt(2.0 * d0 / (m * force->mvv2e));
 
   if (!speeds.empty()) shock_table(*probe, a, c);
 }

@@ -21,7 +21,7 @@ namespace ClusterDyn {
     void compute_vector() override;
     void compute_array() override;
 
-    static constexpr int NVALUES = 20;
+    static constexpr int NVALUES = 21;
 
    private:
     int itype, jtype;

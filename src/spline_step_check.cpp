@@ -29,7 +29,8 @@ void SplineStepCheck::check(LAMMPS *lmp, const char *style, const NeighList *lis
 {
   Update *update = lmp->update;
   Atom *atom = lmp->atom;
-  if (warned || update->whichflag != 1) return;
+  // a run 0 (to read compute pair/params before choosing the step) takes no step
+  if (warned || update->whichflag != 1 || update->nsteps == 0) return;
   if (!update->setupflag && update->ntimestep < next_check) return;
   next_check = update->ntimestep + EVERY;
   const int ntp1 = atom->ntypes + 1;

@@ -9,7 +9,7 @@ from conftest import session
 from spec_laws import Law
 
 NAMES = ["a", "b", "sigma", "D", "fstar", "C", "eps", "kstar", "kv", "k2", "Gamma", "omega0",
-         "T0", "v0", "vd", "Bstar", "Rc", "ucr", "ucr1d", "vl"]
+         "T0", "v0", "vd", "Bstar", "Rc", "ucr", "ucr1d", "vl", "vd0"]
 
 
 def closed_form(law, m=1.0):
@@ -45,7 +45,7 @@ def params(pair_style, pair_coeff, extra="", mass=1.0, commands=()):
                            f"pair_coeff 1 1 {pair_coeff}",
                            *commands, f"compute p all pair/params 1 1 {extra}",
                            "thermo_style custom step c_p[1]", "run 0 post no"])
-        vec = dict(zip(NAMES, lmp.numpy.extract_compute("p", 0, 1)[:20].copy()))
+        vec = dict(zip(NAMES, lmp.numpy.extract_compute("p", 0, 1)[:21].copy()))
         rows = int(extra.count(" ") and "u " in extra and len(extra.split("u ")[1].split()))
         arr = lmp.numpy.extract_compute("p", 0, 2).copy() if rows else None
     return vec, arr
@@ -156,6 +156,46 @@ def test_dusting_criteria_and_lattice_speed():
     assert values["T0"] == pytest.approx(2 * math.pi / values["omega0"], rel=1e-14)
     other, _ = params(f"{law.style()} cut 1.2", law.coeff(), "rc 1.3 mass 1e-12", mass=m)
     assert other["Rc"] == 1.3 and other["vd"] == pytest.approx(math.sqrt(2 * 2.46e-6 / 1e-12))
+
+
+@pytest.mark.parametrize("tail", ["cut 1.3", "wagner", "lagunov 1.2", "cut 1.3 shift"])
+@pytest.mark.parametrize("units", ["lj", "si"])
+def test_vd_of_the_law_as_computed_and_of_the_base_law(units, tail):
+    """vd0 (index 21) is the papers' sqrt(2 D / m) of the base law, whatever the tail; vd
+    (index 15) is that of the law as the pair style computes it, the depth its energy shift
+    leaves: sqrt(-2 E(a) / m), E the energy LAMMPS reports for a dimer at the distance a
+    (pair_modify shift lowers the depth by |Pi(Rc)|; the smooth tails keep Pi(a)).  In lj and
+    si units (mvv2e 1)."""
+    shift = tail.endswith("shift")
+    tail = tail.replace(" shift", "")
+    law = Law("morse", 1.0, 1.0, alpha=3.76) if units == "lj" else \
+        Law("morse", 2.46e-6, 1e-5, alpha=3.76e5)
+    m = 1.0 if units == "lj" else 2.338e-12
+    with session() as lmp:
+        lmp.commands_list([f"units {units}", "boundary f f f", "atom_modify map array",
+                           f"region box block 0 {6 * law.a} 0 {6 * law.a} 0 {6 * law.a} units box",
+                           "create_box 1 box", f"mass 1 {m}",
+                           f"create_atoms 1 single {law.a} {law.a} {law.a} units box",
+                           f"create_atoms 1 single {2 * law.a} {law.a} {law.a} units box",
+                           f"neighbor {0.1 * law.a} nsq", f"pair_style {law.style()} {tail}",
+                           f"pair_coeff 1 1 {law.coeff()}", f"pair_modify shift {'yes' if shift else 'no'}",
+                           "compute p all pair/params 1 1",
+                           "thermo_style custom step pe c_p[1]", "thermo_modify norm no",
+                           "run 0 post no"])
+        vec = dict(zip(NAMES, lmp.numpy.extract_compute("p", 0, 1)[:21].copy()))
+        energy = lmp.get_thermo("pe")
+    assert vec["vd0"] == pytest.approx(math.sqrt(2 * law.D / m), rel=1e-12)
+    assert vec["vd"] == pytest.approx(math.sqrt(-2 * energy / m), rel=1e-10)
+    if shift:     # the depth less |Pi(1.3 a)| of the base law
+        assert vec["vd"] == pytest.approx(vec["vd0"] * math.sqrt(1 + law.pi(1.3 * law.a) / law.D),
+                                          rel=1e-10)
+    else:
+        assert vec["vd"] == pytest.approx(vec["vd0"], rel=1e-12)
+
+
+def test_stock_style_vd0_is_its_vd():
+    values, _ = params("morse 2.5", "1.0 6.0 1.0", commands=["pair_modify shift yes"])
+    assert values["vd0"] == values["vd"]
 
 
 def solve_y(law, u, c0):
