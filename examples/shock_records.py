@@ -1,10 +1,16 @@
 """The records a shock physicist reads, from the files in.shock3d and in.spall write: x-t data
 (fix ave/chunk, read with lammps.formats.AvgChunkFile), free-surface velocity histories (fix
 ave/time), histograms (fix ave/histo), and the quantities taken from them: shock fronts and
-speeds, the pull-back of a spall signal.  Shared by shock-3d/run_records.py and
-spall/run_spall.py."""
+speeds, and the pull-back of a spall signal (tools/pull_back.py, re-exported here).  Shared by
+shock-3d/run_records.py, spall/run_spall.py and mca-spall/run_plate.py."""
+import os
+import sys
+
 import numpy as np
 from lammps.formats import AvgChunkFile
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools"))
+from pull_back import pull_back  # noqa: E402,F401  (the spall signal: tools/pull_back.py)
 
 
 class XT:
@@ -56,20 +62,6 @@ def histogram(path):
         blocks.append(np.array(lines[k + 1:k + 1 + n], dtype=float))
         k += n + 1
     return blocks[-1][:, 1], blocks[-1][:, 2]
-
-
-def pull_back(t, v, pulse, smooth=5):
-    """The spall signal of a free-surface velocity history (noisy: a running mean over
-    `smooth` records first): from the arrival of the shock (half the largest velocity), the
-    peak within the pulse duration `pulse` (time), then the lowest velocity within `pulse`
-    after the peak: (t_peak, v_peak, t_min, v_min)."""
-    vs = np.convolve(v, np.ones(smooth) / smooth, mode="same")
-    arrived = np.where(vs > 0.5 * vs.max())[0][0]
-    plateau = np.where((t >= t[arrived]) & (t <= t[arrived] + pulse))[0]
-    peak = plateau[np.argmax(vs[plateau])]
-    after = np.where((t >= t[peak]) & (t <= t[peak] + pulse))[0]
-    low = after[np.argmin(vs[after])]
-    return t[peak], vs[peak], t[low], vs[low]
 
 
 def plot_xt(fig, axes, xt, title, xscale=1e3, tscale=1e6, xlabel="x (mm)"):

@@ -10,6 +10,7 @@
 #include "version.h"
 
 #include "compute_dust.h"
+#include "compute_free_surface.h"
 #include "compute_links_atom.h"
 #include "compute_mca_atom.h"
 #include "compute_pair_params.h"
@@ -87,6 +88,11 @@ Compute *create_compute_dust(LAMMPS *lmp, int narg, char **arg)
   return new ComputeDust(lmp, narg, arg);
 }
 
+Compute *create_compute_free_surface(LAMMPS *lmp, int narg, char **arg)
+{
+  return new ComputeFreeSurface(lmp, narg, arg);
+}
+
 Compute *create_compute_links_atom(LAMMPS *lmp, int narg, char **arg)
 {
   return new ComputeLinksAtom(lmp, narg, arg);
@@ -138,6 +144,11 @@ extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
   plugin.name = "dust";
   plugin.info = "fragments of the bond graph and the dust";
   plugin.creator.v2 = (lammpsplugin_factory2 *) &create_compute_dust;
+  (*register_plugin)(&plugin, lmp);
+
+  plugin.name = "free/surface";
+  plugin.info = "velocity of a body's free face, dust excluded (a simulated VISAR)";
+  plugin.creator.v2 = (lammpsplugin_factory2 *) &create_compute_free_surface;
   (*register_plugin)(&plugin, lmp);
 
   plugin.name = "links/atom";

@@ -19,7 +19,7 @@ PAIR_STYLES = [s + v for s in ("morse/spline", "lj/spline", "mie/spline", "harmo
                for v in ("", "/omp")]
 ALL_PAIR_STYLES = PAIR_STYLES + ["mca"]
 FIX_STYLES = ["viscous/relative", "descent/normalized"]
-COMPUTE_STYLES = ["dust", "links/atom", "pair/params", "mca/atom"]
+COMPUTE_STYLES = ["dust", "links/atom", "pair/params", "mca/atom", "free/surface"]
 
 
 def load_plugin(lmp, path=PLUGIN):

@@ -1,0 +1,104 @@
+/* ----------------------------------------------------------------------
+   Cluster-dynamics plugin for LAMMPS: compute free/surface.
+
+   The velocity of a body's free face: of the group's atoms that the named
+   compute dust counts in its group and does not flag as dust, the
+   outermost along the axis (largest coordinate for the rear face, smallest
+   for the front) sets the face; the atoms within `depth` of it give the
+   mass-weighted mean velocity along the axis.  After a spall the rear face
+   is that of the spalled layer (its large fragment lies outermost), as a
+   VISAR sees it.  Two reductions over the processors (the face, then the
+   layer's momentum, mass and count).
+------------------------------------------------------------------------- */
+
+#include "compute_free_surface.h"
+
+#include "arg_values.h"
+#include "atom.h"
+#include "error.h"
+#include "modify.h"
+#include "update.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <mpi.h>
+
+using namespace LAMMPS_NS;
+using namespace ClusterDyn;
+
+static const char *WHO = "Compute free/surface";
+
+ComputeFreeSurface::ComputeFreeSurface(LAMMPS *lmp, int narg, char **arg) :
+    Compute(lmp, narg, arg)
+{
+  if (narg < 5)
+    error->all(FLERR, "{}: expected compute ID group free/surface dust-ID depth "
+               "[axis x|y|z] [face rear|front]", WHO);
+  dust_id = arg[3];
+  depth = positive_arg(WHO, "depth", arg[4], lmp);
+  for (int i = 5; i < narg; i += 2) {
+    const std::string key = arg[i];
+    if (key != "axis" && key != "face")
+      error->all(FLERR, "{}: unknown keyword '{}' (axis, face)", WHO, key);
+    if (i + 1 >= narg) error->all(FLERR, "{}: {} needs a value", WHO, key);
+    const std::string val = arg[i + 1];
+    if (key == "axis") {
+      if (val != "x" && val != "y" && val != "z")
+        error->all(FLERR, "{}: axis must be x, y or z (got '{}')", WHO, val);
+      axis = val[0] - 'x';
+    } else {
+      if (val != "rear" && val != "front")
+        error->all(FLERR, "{}: face must be rear or front (got '{}')", WHO, val);
+      sign = val == "rear" ? 1 : -1;
+    }
+  }
+  vector_flag = 1;
+  size_vector = 3;
+  extvector = 0;
+  vector = new double[size_vector];
+}
+
+ComputeFreeSurface::~ComputeFreeSurface()
+{
+  delete[] vector;
+}
+
+void ComputeFreeSurface::init()
+{
+  dust = modify->get_compute_by_id(dust_id);
+  if (!dust) error->all(FLERR, "{}: no compute with ID '{}'", WHO, dust_id);
+  if (strcmp(dust->style, "dust") != 0)
+    error->all(FLERR, "{}: compute '{}' is {}, not a compute dust", WHO, dust_id, dust->style);
+}
+
+void ComputeFreeSurface::compute_vector()
+{
+  invoked_vector = update->ntimestep;
+  if (dust->invoked_peratom != update->ntimestep) dust->compute_peratom();
+  double **fragment = dust->array_atom;    // fragment ID, size (0: outside its group), dust flag
+  double **x = atom->x, **v = atom->v;
+  const int *mask = atom->mask, *type = atom->type;
+  const int nlocal = atom->nlocal;
+  auto counted = [&](int i) {
+    return (mask[i] & groupbit) && fragment[i][1] > 0.0 && fragment[i][2] == 0.0;
+  };
+
+  double outer = -HUGE_VAL, outer_all;    // sign x of the outermost atom
+  for (int i = 0; i < nlocal; i++)
+    if (counted(i)) outer = std::max(outer, sign * x[i][axis]);
+  MPI_Allreduce(&outer, &outer_all, 1, MPI_DOUBLE, MPI_MAX, world);
+
+  double sums[3] = {0.0, 0.0, 0.0}, all[3];    // momentum, mass, atoms of the layer
+  for (int i = 0; i < nlocal; i++)
+    if (counted(i) && sign * x[i][axis] > outer_all - depth) {
+      const double m = atom->rmass ? atom->rmass[i] : atom->mass[type[i]];
+      sums[0] += m * v[i][axis];
+      sums[1] += m;
+      sums[2] += 1.0;
+    }
+  MPI_Allreduce(sums, all, 3, MPI_DOUBLE, MPI_SUM, world);
+  vector[0] = all[1] > 0.0 ? all[0] / all[1] : 0.0;
+  vector[1] = all[2] > 0.0 ? sign * outer_all : 0.0;
+  vector[2] = all[2];
+}

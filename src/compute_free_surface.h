@@ -1,0 +1,36 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   Cluster-dynamics plugin for LAMMPS: compute free/surface, the velocity
+   of a body's free face (what a VISAR records): the mean velocity along an
+   axis of the group's atoms within a depth of its outermost atom that a
+   compute dust does not flag as dust (doc/compute_free_surface.rst).
+------------------------------------------------------------------------- */
+
+#ifndef LMP_CLUSTERDYN_COMPUTE_FREE_SURFACE_H
+#define LMP_CLUSTERDYN_COMPUTE_FREE_SURFACE_H
+
+#include "compute.h"
+
+#include <string>
+
+namespace LAMMPS_NS {
+namespace ClusterDyn {
+
+  class ComputeFreeSurface : public Compute {
+   public:
+    ComputeFreeSurface(class LAMMPS *, int, char **);
+    ~ComputeFreeSurface() override;
+    void init() override;
+    void compute_vector() override;
+
+   private:
+    std::string dust_id;
+    Compute *dust = nullptr;
+    double depth;
+    int axis = 0;       // x, y, z
+    int sign = 1;       // +1: the face at the largest coordinate (rear), -1: the smallest
+  };
+
+}    // namespace ClusterDyn
+}    // namespace LAMMPS_NS
+
+#endif

@@ -1,0 +1,111 @@
+"""compute free/surface (the velocity of a body's free face, dust excluded): against the same
+quantity built from stock LAMMPS commands (atom-style variables and compute reduce) over a
+spall run, a closed form on a velocity ramp in two unit styles, serial against 2 ranks, and
+bad input."""
+import os
+
+import pytest
+from conftest import PLUGIN, run_lmp, session
+
+EXAMPLES = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..", "examples"))
+
+# the rear face of the target by stock commands (examples/spall/in.spall before this compute)
+STOCK = """variable inlarge atom x*(c_parts[3]==0)*(c_parts[2]>0)
+compute stockrear target reduce max v_inlarge
+variable stockrear equal c_stockrear
+variable nearrear atom (c_parts[3]==0)&&(c_parts[2]>0)&&(x>v_stockrear-2*v_a)
+variable vrear atom vx*v_nearrear
+compute rearsum target reduce sum v_vrear v_nearrear
+variable stockv equal c_rearsum[1]/c_rearsum[2]
+variable stockn equal c_rearsum[2]"""
+
+
+def test_equals_the_stock_construction_through_a_spall():
+    """examples/spall/in.spall at 1.5 vd (the target spalls; the face is then the spalled
+    layer's): the compute's velocity, face position and count equal the stock construction's
+    at every check, before and after the spall."""
+    with session("-var", "ratio", "1.5", "-var", "records", "0", "-var", "target", "12",
+                 "-var", "flyer", "6") as lmp:
+        lmp.file(os.path.join(EXAMPLES, "spall", "in.spall"))
+        lmp.commands_string(STOCK)
+        seen = 0
+        for _ in range(8):
+            lmp.command("run 100 post no")
+            got = [lmp.extract_variable(n) for n in ("vfree", "rear")]
+            assert got[0] == pytest.approx(lmp.extract_variable("stockv"), rel=1e-12, abs=1e-9)
+            assert got[1] == lmp.extract_variable("stockrear")
+            seen += got[0] != 0.0
+        assert lmp.extract_variable("large") >= 2 and seen > 0
+
+
+RAMP = """units {units}
+boundary p p p
+lattice sc {a}
+region box block -2 14 0 4 0 4
+create_box 1 box
+region body block 0 9.9 INF INF INF INF
+create_atoms 1 region body
+create_atoms 1 single 12 1 1
+mass 1 {m}
+pair_style morse/spline cut 1.2
+pair_coeff 1 1 {D} {alpha} {a}
+neighbor {skin} bin
+group body region body
+variable ramp atom {k}*x
+velocity all set v_ramp 0 0 units box
+compute dust all dust
+compute face all free/surface dust {depth}
+compute front all free/surface dust {depth} face front
+compute side all free/surface dust {depth} axis y
+thermo_style custom step c_face[*] c_front[*] c_side[*]
+thermo_modify format float %.15g
+run 0
+"""
+
+
+@pytest.mark.parametrize("units", ["lj", "si"])
+def test_velocity_ramp_closed_form(units):
+    """A 10 x 4 x 4 sc block with vx = k x and one lone atom beyond its rear (dust): the rear
+    face (depth 1.5 a: the last two planes, x = 8a and 9a) moves at k 8.5 a, the front face
+    (x = 0 and a) at k 0.5 a, the face along y at 0 (vx only); 32 atoms each."""
+    a, m, D = (1.0, 1.0, 1.0) if units == "lj" else (1e-5, 2.338e-12, 2.46e-6)
+    k = 0.01 if units == "lj" else 1.0e7
+    with session() as lmp:
+        lmp.commands_string(RAMP.format(units=units, a=a, m=m, D=D, alpha=3.76 / a,
+                                        skin=0.2 * a, k=k, depth=1.5 * a))
+        face = [lmp.extract_compute("face", 0, 1)[i] for i in range(3)]
+        front = [lmp.extract_compute("front", 0, 1)[i] for i in range(3)]
+        side = [lmp.extract_compute("side", 0, 1)[i] for i in range(3)]
+    assert face == pytest.approx([k * 8.5 * a, 9 * a, 32], rel=1e-12)
+    assert front == pytest.approx([k * 0.5 * a, 0.0, 32], rel=1e-12, abs=1e-12 * a)
+    assert side[0] == 0.0 and side[2] == 80    # the planes y = 2a and 3a: 10 x 2 x 4 atoms
+
+
+def test_two_ranks_give_the_serial_values(tmp_path):
+    script = f"plugin load {PLUGIN}\n" + RAMP.format(units="lj", a=1.0, m=1.0, D=1.0,
+                                                     alpha=3.76, skin=0.2, k=0.01, depth=1.5)
+    serial = run_lmp(tmp_path, script).split("c_face[1]")[1].splitlines()[1]
+    parallel = run_lmp(tmp_path, script, nprocs=2).split("c_face[1]")[1].splitlines()[1]
+    assert serial == parallel
+
+
+@pytest.mark.parametrize("args,message", [
+    ("", "expected compute ID group free/surface dust-ID depth"),
+    ("nosuch 1.0", "no compute with ID 'nosuch'"),
+    ("ke 1.0", "compute 'ke' is ke, not a compute dust"),
+    ("dust 0", "depth"),
+    ("dust -1", "depth"),
+    ("dust 1.0 axis w", "axis must be x, y or z"),
+    ("dust 1.0 face back", "face must be rear or front"),
+    ("dust 1.0 side rear", "unknown keyword 'side'"),
+    ("dust 1.0 axis", "axis needs a value"),
+])
+def test_bad_arguments(args, message):
+    with session() as lmp:
+        lmp.commands_list(["units lj", "region box block 0 4 0 4 0 4", "create_box 1 box",
+                           "mass 1 1.0", "pair_style morse/spline cut 1.2",
+                           "pair_coeff 1 1 1.0 3.76 1.0", "compute dust all dust",
+                           "compute ke all ke"])
+        with pytest.raises(Exception, match=message):
+            lmp.commands_list([f"compute f all free/surface {args}",
+                               "thermo_style custom step c_f[1]", "run 0"])
