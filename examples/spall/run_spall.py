@@ -30,11 +30,16 @@ RATIOS = [round(0.6 + 0.05 * k, 2) for k in range(21)]   # v / vd = 0.6 ... 1.6
 
 
 def run(ratio, pot="al-cluster-10um", **var):
-    """One impact; returns spall (bool), the spalled share of the target and the wall time."""
+    """One impact; returns spall (bool), the spalled share of the target, the wall time, and
+    the energy the damping removed (-var J) with the impact's kinetic energy."""
     start = time.time()
     with script(os.path.join(HERE, "in.spall"), {"ratio": ratio, "pot": pot, "records": 0,
                                                  **var}) as lmp:
         large = lmp.extract_variable("large")
+        removed = lmp.extract_variable("removed")        # by the damping (-var J)
+        lmp.command("variable nflyer equal count(flyer)")
+        impact = 0.5 * lmp.extract_variable("nflyer") * lmp.extract_atom("mass")[1] * \
+            lmp.extract_variable("v") ** 2               # mass x velocity^2: si and lj energy
         parts = np.array(lmp.gather("c_parts", 1, 3)).reshape(-1, 3)
         x = np.array(lmp.gather_atoms("x", 1, 3)).reshape(-1, 3)[:, 0]
     intarget = parts[:, 1] > 0
@@ -44,7 +49,8 @@ def run(ratio, pot="al-cluster-10um", **var):
     if len(ids) >= 2:  # the spalled layer: the large fragment furthest from the impact
         rear = max(ids, key=lambda i: x[parts[:, 0] == i].mean())
         rear_share = np.sum(parts[:, 0] == rear) / np.sum(intarget)
-    return {"spall": large >= 2, "share": rear_share, "seconds": time.time() - start}
+    return {"spall": large >= 2, "share": rear_share, "seconds": time.time() - start,
+            "removed": removed, "impact": impact}
 
 
 # the records: (label, in.spall settings, longitudinal speed / v0 along the impact: Krivtsov &
