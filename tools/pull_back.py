@@ -6,11 +6,15 @@ peak to its first minimum after it, and the acoustic spall strength 1/2 rho0 c0 
     /usr/bin/python3 tools/pull_back.py target.visar --rho0 2700 --c0 6386 --flyer 1.41e-4
     /usr/bin/python3 tools/pull_back.py FILE --rho0 RHO --c0 C (--flyer H | --pulse T)
                                         [--time-column 1] [--velocity-column 2] [--smooth 5]
+                                        [--rebound 0.1]
 
 FILE: whitespace columns, '#' comments (fix ave/time writes the step first, then its values).
 The peak is sought within the pulse duration after the shock's arrival (the first record at
 half the largest velocity), the minimum within a pulse duration after the peak; the
 velocities are first smoothed by a running mean of --smooth records (a lattice's face rings).
+With --rebound F the minimum is the lowest before the record rises again by F times the peak
+velocity (the spall signal's first rise): a lattice's face rings after the spall and a later
+ring can dip below the pull-back's minimum within the pulse duration.
 The pulse lasts 2 H / c0 for a flyer of thickness H.
 
 Which c0: the longitudinal sound speed of the unloaded material along the impact, the speed
@@ -29,17 +33,26 @@ import sys
 import numpy as np
 
 
-def pull_back(t, v, pulse, smooth=5):
+def pull_back(t, v, pulse, smooth=5, rebound=0.0):
     """The spall signal of a free-surface velocity history (noisy: a running mean over
     `smooth` records first): from the arrival of the shock (half the largest velocity), the
     peak within the pulse duration `pulse` (time), then the lowest velocity within `pulse`
-    after the peak: (t_peak, v_peak, t_min, v_min)."""
+    after the peak; with rebound > 0, the lowest before the record first rises again by that
+    share of the peak velocity (the spall signal: a lattice's face rings after it, and a later
+    ring can dip lower): (t_peak, v_peak, t_min, v_min)."""
     vs = np.convolve(v, np.ones(smooth) / smooth, mode="same")
     arrived = np.where(vs > 0.5 * vs.max())[0][0]
     plateau = np.where((t >= t[arrived]) & (t <= t[arrived] + pulse))[0]
     peak = plateau[np.argmax(vs[plateau])]
     after = np.where((t >= t[peak]) & (t <= t[peak] + pulse))[0]
     low = after[np.argmin(vs[after])]
+    if rebound > 0.0:
+        low = after[0]
+        for k in after:
+            if vs[k] < vs[low]:
+                low = k
+            elif vs[k] - vs[low] > rebound * vs[peak]:
+                break
     return t[peak], vs[peak], t[low], vs[low]
 
 
@@ -57,6 +70,10 @@ def main(argv=None):
     ap.add_argument("--time-column", type=int, default=1, help="0-based (default 1)")
     ap.add_argument("--velocity-column", type=int, default=2, help="0-based (default 2)")
     ap.add_argument("--smooth", type=int, default=5, help="running mean over N records")
+    ap.add_argument("--rebound", type=float, default=0.0,
+                    help="the minimum before the record rises again by this share of the peak "
+                         "velocity (e.g. 0.1 for a ringing lattice face; default 0: the lowest "
+                         "within a pulse duration after the peak)")
     args = ap.parse_args(argv)
     for name in ("rho0", "c0", "flyer", "pulse"):
         value = getattr(args, name)
@@ -72,7 +89,9 @@ def main(argv=None):
     if len(t) < 2 * args.smooth or not np.any(v > 0.0):
         ap.error(f"{args.file}: {len(t)} records, no positive velocity: no shock arrived")
     duration = args.pulse if args.pulse else 2.0 * args.flyer / args.c0
-    tp, vp, tm, vm = pull_back(t, v, duration, args.smooth)
+    if not 0.0 <= args.rebound < 1.0:
+        ap.error(f"--rebound must be in [0, 1) (got {args.rebound})")
+    tp, vp, tm, vm = pull_back(t, v, duration, args.smooth, args.rebound)
     du = vp - vm
     print(f"peak {vp:.6g} at {tp:.6g}; minimum {vm:.6g} at {tm:.6g}; pull-back dU = {du:.6g}")
     print(f"spall strength 1/2 rho0 c0 dU = {0.5 * args.rho0 * args.c0 * du:.6g}")

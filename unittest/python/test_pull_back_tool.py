@@ -40,6 +40,19 @@ def test_command_line_and_module_read_the_known_pull_back(tmp_path):
     assert 12e-9 <= tp <= 42e-9 and 47e-9 <= tm <= 57e-9
 
 
+def test_rebound_takes_the_minimum_before_the_spall_signal(tmp_path):
+    """A ringing face: the pull-back's minimum (300 m/s below the plateau), the spall signal's
+    rise, then a deeper ring within the pulse duration: the window rule reads the ring, the
+    rebound rule the pull-back."""
+    t = np.arange(0.0, 100e-9, 1e-9)
+    v = np.interp(t, [0, 10e-9, 12e-9, 30e-9, 35e-9, 40e-9, 45e-9, 50e-9, 55e-9, 60e-9],
+                  [0, 0, 1000, 1000, 700, 700, 950, 300, 300, 900])
+    tp, vp, tm, vm = pull_back(t, v, 50e-9)
+    assert vm == pytest.approx(300.0)
+    tp, vp, tm, vm = pull_back(t, v, 50e-9, rebound=0.1)
+    assert vm == pytest.approx(700.0) and 35e-9 <= tm <= 40e-9
+
+
 @pytest.mark.parametrize("args,message", [
     (["--rho0", "2700", "--c0", "6386"], "one of the arguments --flyer --pulse is required"),
     (["--rho0", "0", "--c0", "6386", "--pulse", "1e-8"], "--rho0 must be positive"),
@@ -48,6 +61,8 @@ def test_command_line_and_module_read_the_known_pull_back(tmp_path):
      "cannot read the time and velocity columns"),
     (["--rho0", "2700", "--c0", "6386", "--pulse", "1e-8", "--smooth", "0"],
      "--smooth must be at least 1"),
+    (["--rho0", "2700", "--c0", "6386", "--pulse", "1e-8", "--rebound", "1.5"],
+     "--rebound must be in [0, 1)"),
 ])
 def test_bad_arguments(tmp_path, args, message):
     record(tmp_path / "a.visar")
