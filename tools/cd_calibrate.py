@@ -85,8 +85,37 @@ def calibrate(density, sound_speed, spall_speed, size, lattice, law="morse", n=1
     else:
         raise ValueError(f"unknown law '{law}' (expected morse, lj or mie)")
     p = {"style": style, "law": shape, "m": mass, "a": size, "D": depth, "C": c, "kv": kv,
-         "v0": v0, "vd": math.sqrt(2 * depth / mass)}
+         "v0": v0, "vd": math.sqrt(2 * depth / mass), "density": density}
+    p.update(predictions(shape, kv, size))
     return in_units(p, "si")
+
+
+# the papers' sets: Morse alpha a = 3.76 (the aluminium clusters) and 6 (matched to LJ)
+KV_RANGE = (2.5, 8.0)
+
+
+def predictions(shape, kv, size):
+    """What the set implies beyond its inputs (chain values, doc/compute_pair_params.rst):
+    the Grueneisen coefficient -a Pi'''(a) / (2 Pi''(a)) and the inflection (break) distance b."""
+    if shape["name"] == "morse":
+        return {"gamma": 1.5 * kv, "b": size * (1.0 + math.log(2.0) / kv)}
+    n, m = (12.0, 6.0) if shape["name"] == "lj" else (shape["n"], shape["m"])
+    b0 = size * ((n + 1) / (m + 1)) ** (1 / (n - m))
+    return {"gamma": shape["kappa"] * (n + m + 3) / 2, "b": size + (b0 - size) / shape["kappa"]}
+
+
+def warnings(p):
+    """Plain-language warnings for a set far from the papers' range."""
+    out = []
+    if not KV_RANGE[0] <= p["kv"] <= KV_RANGE[1]:
+        out.append(f"kv = v0 / v_spall = {p['kv']:.3g} is far from the papers' sets (Morse alpha a "
+                   f"3.76 and 6): the chain's Grueneisen coefficient is {p['gamma']:.3g} (metals: "
+                   "about 1.5 to 2.5) and the bond breaks at b = "
+                   f"{p['b'] / p['a']:.3g} a.  The spall speed is the lowest impact speed that "
+                   "spalls a target twice the flyer's thickness (about 1.2-1.3 vd on fcc [100], "
+                   "examples/spall), not a free-surface pull-back; such a set neither holds a "
+                   "metal's Hugoniot nor its spall strength (doc/plate_impact.rst)")
+    return out
 
 
 def include_file(p, name, inputs):
@@ -94,6 +123,10 @@ def include_file(p, name, inputs):
         f"# {name}: calibrated by tools/cd_calibrate.py from {inputs} (SI)",
         f"# SI: C = {p['C']:.6g} N/m, kv = {p['kv']:.6g}, v0 = {p['v0']:.6g} m/s, "
         f"vd = {p['vd']:.6g} m/s; the numbers below are in units {p['units']}",
+        f"# implied: cluster (lattice) density {p['density']:.6g} (the density given, on this "
+        f"lattice of a), Grueneisen (chain) {p['gamma']:.4g}, break (inflection) distance "
+        f"b = {p['b'] / p['a']:.4g} a, dusting onset u_cr = 1.35 (Rc - 1) v0 = "
+        f"{0.135 * p['v0']:.4g} m/s per 0.1 of Rc - 1",
         f"variable pot_units string {p['units']}",
         f"variable pot_style string {p['style']}",
         f'variable pot_coeff string "{p["coeff"]}"',
@@ -124,6 +157,8 @@ def main(argv=None):
         sys.exit(f"cd_calibrate: {err}")
     inputs = (f"density {args.density}, v_l {args.sound_speed}, v_spall {args.spall_speed}, "
               f"a {args.size}, lattice {args.lattice}, law {args.law}")
+    for text in warnings(p):
+        sys.stderr.write(f"cd_calibrate: warning: {text}\n")
     sys.stdout.write(include_file(p, args.name, inputs))
 
 

@@ -63,6 +63,25 @@ def test_calibration_round_trip(tmp_path, law, lattice):
     p = load(path, lattice)
     assert p["vl"] == pytest.approx(v_l, rel=1e-9)
     assert p["vd"] == pytest.approx(v_spall, rel=1e-9)
+    # what the header says the set implies, against compute pair/params on the written set
+    implied = next(line for line in out.stdout.splitlines() if line.startswith("# implied"))
+    gamma = float(implied.split("Grueneisen (chain) ")[1].split(",")[0])
+    b = float(implied.split("b = ")[1].split(" a,")[0])
+    assert gamma == pytest.approx(p["Gamma"], rel=1e-3)
+    assert b == pytest.approx(p["b"] / p["a"], rel=1e-3)
+    assert "density 2700 " in implied
+    assert "warning" not in out.stderr                  # kv = 3.9: the papers' range
+
+
+def test_calibration_warns_far_from_the_papers_range():
+    """The new user's copper-like set of issue 28 (spall speed 120 m/s taken from a pull-back):
+    kv = 36, Grueneisen 54, a bond that breaks at 1.02 a - a warning that says so."""
+    out = subprocess.run([sys.executable, CALIBRATE, "--density", "8900", "--sound-speed", "4760",
+                          "--spall-speed", "120", "--size", "1e-5", "--lattice", "fcc"],
+                         capture_output=True, text=True, check=True)
+    assert "cd_calibrate: warning: kv = v0 / v_spall = 36.1 is far" in out.stderr
+    assert "Grueneisen coefficient is 54.1" in out.stderr and "not a free-surface pull-back" in \
+        out.stderr
 
 
 @pytest.mark.parametrize("args,message", [
