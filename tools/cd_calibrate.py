@@ -16,10 +16,24 @@ m = density x V0; long-wave speed v0 = v_l / lambda (lambda = 1, 1.06, 1.10);
 stiffness C = m (v0/a)^2; the spall (minimum impactor) speed is close to the dissociation
 speed vd = sqrt(2D/m), so kv = v0 / v_spall and D = C a^2 / (2 kv^2).  Morse: alpha = kv/a;
 LJ and Mie(n, m) reach kv through the kappa modification: kappa = kv / sqrt(n m / 2).
+
+A metal's calibration (--hugoniot C0 S or --grueneisen G, --spall-strength, --orientation):
+
+    tools/cd_calibrate.py --density 2700 --sound-speed 6420 --hugoniot 5350 1.34 \
+        --spall-strength 1.2e9 --size 1e-5 --lattice fcc --up 200 > potentials/al.cd
+
+matches the density, the Hugoniot us = c0 + s up of weak shocks along the impact (the law's
+shape gives s, D gives c0) and the spall strength as the lattice's ideal tensile strength (the
+cut Rc, written as pot_rc), by the lattice mechanics of tools/cd_uniaxial.py; it prints what
+it cannot match and the predictions (doc/compute_pair_params.rst, doc/plate_impact.rst).
 """
 import argparse
 import math
+import os
 import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import cd_uniaxial  # noqa: E402
 
 LATTICES = {"chain": (1, 1.0), "tri": (2, 1.06), "fcc": (3, 1.10)}
 
@@ -61,8 +75,8 @@ def calibrate(density, sound_speed, spall_speed, size, lattice, law="morse", n=1
     """The parameter set as a dict; raises ValueError when the data admit no potential."""
     for name, value in (("density", density), ("sound speed", sound_speed),
                         ("spall speed", spall_speed), ("size", size)):
-        if not value > 0:
-            raise ValueError(f"{name} must be > 0 (got {value})")
+        if not (value > 0 and math.isfinite(value)):
+            raise ValueError(f"{name} must be a finite number > 0 (got {value})")
     if lattice not in LATTICES:
         raise ValueError(f"unknown lattice '{lattice}' (expected chain, tri or fcc)")
     if law == "mie" and not n > m > 0:
@@ -87,6 +101,78 @@ def calibrate(density, sound_speed, spall_speed, size, lattice, law="morse", n=1
     p = {"style": style, "law": shape, "m": mass, "a": size, "D": depth, "C": c, "kv": kv,
          "v0": v0, "vd": math.sqrt(2 * depth / mass), "density": density}
     p.update(predictions(shape, kv, size))
+    return in_units(p, "si")
+
+
+def bisect(f, lo, hi, target, steps=60):
+    """x in [lo, hi] with f(x) = target, f increasing."""
+    for _ in range(steps):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if f(mid) < target else (lo, mid)
+    return 0.5 * (lo + hi)
+
+
+# a nearest-neighbour model: the cutoff stays below the second neighbours
+SECOND_NEIGHBOUR = {"chain": 2.0, "tri": math.sqrt(3.0), "fcc": math.sqrt(2.0)}
+SHAPE_RANGE = {"morse": (1.0, 60.0), "lj": (0.05, 20.0), "mie": (0.05, 20.0)}
+
+
+def calibrate_metal(density, c0, s, strength, size, lattice="fcc", orientation="100",
+                    law="morse", n=12.0, m=6.0, up=None, sound_speed=None):
+    """A set matched to a metal's density, Hugoniot us = c0 + s up and spall strength on the
+    lattice strained along orientation: the law's shape gives s, D gives c0 (the lattice's
+    longitudinal speed along the impact), the cut Rc the ideal tensile strength
+    (cd_uniaxial.py).  Returns the set (SI) with its predictions; raises ValueError when the
+    data admit no set."""
+    for name, value in (("density", density), ("Hugoniot c0", c0), ("Hugoniot s", s),
+                        ("spall strength", strength), ("size", size)):
+        if not (value > 0 and math.isfinite(value)):
+            raise ValueError(f"{name} must be a finite number > 0 (got {value})")
+    if law == "mie" and not n > m > 0:
+        raise ValueError(f"Mie exponents need n > m > 0 (got n = {n}, m = {m})")
+    if law not in SHAPE_RANGE:
+        raise ValueError(f"unknown law '{law}' (expected morse, lj or mie)")
+    if lattice not in LATTICES:
+        raise ValueError(f"unknown lattice '{lattice}' (expected chain, tri or fcc)")
+    n, m = (12.0, 6.0) if law == "lj" else (n, m)
+    base = cd_uniaxial.Law(law, 1.0, n, m)
+    direction = cd_uniaxial.Uniaxial(lattice, orientation, base)     # checks the orientation
+    lo, hi = SHAPE_RANGE[law]
+    slope = lambda k: cd_uniaxial.Uniaxial(lattice, orientation, base.with_shape(k)).slope()
+    if not slope(lo) < s < slope(hi):
+        raise ValueError(f"Hugoniot slope s = {s} is outside what {law} on {lattice} "
+                         f"[{orientation}] gives ({slope(lo):.3g} to {slope(hi):.3g})")
+    shape = bisect(slope, lo, hi, s)
+    d, volume = LATTICES[lattice][0], direction.volume * size ** LATTICES[lattice][0]
+    mass = density * volume
+    smooth = cd_uniaxial.Uniaxial(lattice, orientation, base.with_shape(shape))
+    depth = mass * (c0 / smooth.speed()) ** 2
+    unit_stress = depth / size ** d
+    ideal = smooth.strength() * unit_stress
+    cut = lambda rc: cd_uniaxial.Uniaxial(lattice, orientation,
+                                          base.with_shape(shape, rc)).strength() * unit_stress
+    rc_max = SECOND_NEIGHBOUR[lattice] - 1e-9
+    if strength >= cut(rc_max):
+        raise ValueError(f"spall strength {strength:.4g} is at or above the lattice's ideal "
+                         f"strength {cut(rc_max):.4g} (cut below the second neighbours)")
+    rc = bisect(cut, 1.0 + 1e-9, rc_max, strength)
+    lattice_law = cd_uniaxial.Uniaxial(lattice, orientation, base.with_shape(shape, rc))
+    vunit = math.sqrt(depth / mass)
+    chain_v0 = math.sqrt(2.0) * shape if law == "morse" else None
+    shape_dict = ({"name": "morse"} if law == "morse" else
+                  {"name": law, "n": n, "m": m, "kappa": shape})
+    kv = shape if law == "morse" else shape * math.sqrt(n * m / 2)
+    v0 = kv * math.sqrt(2 * depth / mass)          # the chain's long-wave speed a sqrt(C/m)
+    up = c0 * 0.04 if up is None else up
+    p = {"style": shape_dict["name"] + "/spline", "law": shape_dict, "m": mass, "a": size,
+         "D": depth, "C": mass * (v0 / size) ** 2, "kv": kv, "v0": v0, "density": density,
+         "vd": math.sqrt(2 * depth / mass), "rc": rc, "orientation": orientation,
+         "lattice": lattice, "c_impact": smooth.speed() * vunit, "s": smooth.slope(),
+         "ideal": ideal, "strength": lattice_law.strength() * unit_stress, "up": up,
+         "us": lattice_law.hugoniot(up / vunit) * vunit, "us_metal": c0 + s * up,
+         "ucr": 1.35 * (rc - 1) * v0, "usp": strength / (density * c0),
+         "sound_speed": sound_speed, "chain_v0": chain_v0}
+    p.update(predictions(shape_dict, kv, size))
     return in_units(p, "si")
 
 
@@ -119,19 +205,54 @@ def warnings(p):
 
 
 def include_file(p, name, inputs):
-    return "\n".join([
+    lines = [
         f"# {name}: calibrated by tools/cd_calibrate.py from {inputs} (SI)",
         f"# SI: C = {p['C']:.6g} N/m, kv = {p['kv']:.6g}, v0 = {p['v0']:.6g} m/s, "
         f"vd = {p['vd']:.6g} m/s; the numbers below are in units {p['units']}",
         f"# implied: cluster (lattice) density {p['density']:.6g} (the density given, on this "
         f"lattice of a), Grueneisen (chain) {p['gamma']:.4g}, break (inflection) distance "
         f"b = {p['b'] / p['a']:.4g} a, dusting onset u_cr = 1.35 (Rc - 1) v0 = "
-        f"{0.135 * p['v0']:.4g} m/s per 0.1 of Rc - 1",
+        f"{0.135 * p['v0']:.4g} m/s per 0.1 of Rc - 1"]
+    if "rc" in p:
+        lines += report(p) + [f"variable pot_rc    equal  {p['rc']!r}"]
+    lines += [
         f"variable pot_units string {p['units']}",
         f"variable pot_style string {p['style']}",
         f'variable pot_coeff string "{p["coeff"]}"',
         f"variable pot_m     equal  {p['m']!r}",
-        f"variable pot_a     equal  {p['a']!r}", ""])
+        f"variable pot_a     equal  {p['a']!r}", ""]
+    return "\n".join(lines)
+
+
+def report(p):
+    """The metal calibration's matches, predictions and misses, as comment lines (SI)."""
+    out = [f"# matched on {p['lattice']} [{p['orientation']}] along the impact: density, the "
+           f"Hugoniot's c0 = {p['c_impact']:.5g} m/s and s = {p['s']:.4g} (weak shocks), the "
+           f"spall strength as the ideal tensile strength {p['strength']:.4g} Pa by the cut "
+           f"Rc = {p['rc']:.6g} a (pair_style {p['style']} cut ${{pot_rc}})",
+           f"# predicted: us = {p['us']:.5g} m/s at up = {p['up']:.4g} m/s (cold lattice "
+           f"Hugoniot; the metal's {p['us_metal']:.5g}); ideal strength without the cut "
+           f"{p['ideal']:.4g} Pa; vd = {p['vd']:.5g} m/s",
+           f"# dusting onset u_cr = 1.35 (Rc - 1) v0 = {p['ucr']:.4g} m/s against the particle "
+           f"speed that loads the spall strength, sigma / (rho c0) = {p['usp']:.4g} m/s"]
+    if p.get("sound_speed"):
+        out.append(f"# not matched: the longitudinal speed {p['sound_speed']:.5g} m/s (the "
+                   "lattice has no plastic flow: its elastic and shock waves are one, at c0)")
+    return out
+
+
+def metal_warnings(p):
+    """Warnings for a metal calibration whose lattice cannot show its strength."""
+    out = []
+    if p["ucr"] < p["usp"]:
+        out.append(f"the cut Rc = {p['rc']:.5g} a that matches the spall strength dusts the "
+                   f"lattice from u_cr = {p['ucr']:.3g} m/s, below the particle speed "
+                   f"{p['usp']:.3g} m/s that loads that strength: its ringing breaks bonds "
+                   "before the mean tension reaches it, and a plate impact reads 0.2-0.6 of the "
+                   "strength (measured: doc/plate_impact.rst)")
+    if p["rc"] < 1.05:
+        out.append(f"Rc = {p['rc']:.5g} a is far below the papers' 1.05-1.3")
+    return out
 
 
 def main(argv=None):
@@ -139,8 +260,17 @@ def main(argv=None):
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--density", type=float, required=True,
                     help="mass per volume, kg/m^3 (per area kg/m^2 for tri, per length kg/m for chain)")
-    ap.add_argument("--sound-speed", type=float, required=True, help="longitudinal sound speed v_l, m/s")
-    ap.add_argument("--spall-speed", type=float, required=True, help="spall (minimum impactor) speed, m/s")
+    ap.add_argument("--sound-speed", type=float, help="longitudinal sound speed v_l, m/s")
+    ap.add_argument("--spall-speed", type=float,
+                    help="Krivtsov's spall (minimum impactor) speed, m/s (with --sound-speed)")
+    ap.add_argument("--hugoniot", type=float, nargs=2, metavar=("C0", "S"),
+                    help="the Hugoniot us = C0 + S up (m/s): the metal calibration")
+    ap.add_argument("--grueneisen", type=float,
+                    help="instead of --hugoniot: S = (G + 1)/2, C0 = --sound-speed")
+    ap.add_argument("--spall-strength", type=float, help="spall strength, Pa (metal calibration)")
+    ap.add_argument("--orientation", default=None,
+                    help="lattice direction along the impact (fcc: 100, 110, 111; tri: row, across)")
+    ap.add_argument("--up", type=float, help="particle speed of the predicted shock speed, m/s")
     ap.add_argument("--size", type=float, required=True, help="cluster size = equilibrium distance a, m")
     ap.add_argument("--lattice", required=True, help="chain, tri or fcc")
     ap.add_argument("--law", default="morse", help="morse (default), lj or mie")
@@ -150,16 +280,50 @@ def main(argv=None):
                     help="LAMMPS unit style of the numbers written (default si; lj: reduced by a, m, D)")
     ap.add_argument("--name", default="calibrated", help="name for the header")
     args = ap.parse_args(argv)
+    metal = args.hugoniot is not None or args.grueneisen is not None or \
+        args.spall_strength is not None
     try:
-        p = in_units(calibrate(args.density, args.sound_speed, args.spall_speed, args.size,
-                               args.lattice, args.law, args.n, args.m), args.units)
+        if metal and args.spall_strength is None:
+            raise ValueError("the metal calibration needs --spall-strength (Pa) beside "
+                             "--hugoniot or --grueneisen")
+        if metal:
+            p = calibrate_metal(args.density, *hugoniot_of(args), args.spall_strength, args.size,
+                                args.lattice, args.orientation or ORIENTATION[args.lattice],
+                                args.law, args.n, args.m, args.up, args.sound_speed)
+            inputs = (f"density {args.density}, Hugoniot {p['c_impact']:.6g} + {p['s']:.6g} up, "
+                      f"spall strength {args.spall_strength}, a {args.size}, lattice "
+                      f"{args.lattice} [{p['orientation']}], law {args.law}")
+            texts = metal_warnings(p)
+        else:
+            if args.sound_speed is None or args.spall_speed is None:
+                raise ValueError("give --sound-speed and --spall-speed (Krivtsov's calibration) "
+                                 "or --hugoniot C0 S and --spall-strength (a metal's)")
+            p = calibrate(args.density, args.sound_speed, args.spall_speed, args.size,
+                          args.lattice, args.law, args.n, args.m)
+            inputs = (f"density {args.density}, v_l {args.sound_speed}, v_spall "
+                      f"{args.spall_speed}, a {args.size}, lattice {args.lattice}, law {args.law}")
+            texts = warnings(p)
+        p = in_units(p, args.units)
     except ValueError as err:
         sys.exit(f"cd_calibrate: {err}")
-    inputs = (f"density {args.density}, v_l {args.sound_speed}, v_spall {args.spall_speed}, "
-              f"a {args.size}, lattice {args.lattice}, law {args.law}")
-    for text in warnings(p):
+    for text in texts:
         sys.stderr.write(f"cd_calibrate: warning: {text}\n")
     sys.stdout.write(include_file(p, args.name, inputs))
+
+
+ORIENTATION = {"chain": "row", "tri": "row", "fcc": "100"}
+
+
+def hugoniot_of(args):
+    """(c0, s) from --hugoniot or --grueneisen."""
+    if args.hugoniot is not None and args.grueneisen is not None:
+        raise ValueError("give --hugoniot or --grueneisen, not both")
+    if args.hugoniot is not None:
+        return tuple(args.hugoniot)
+    if args.grueneisen is None or args.sound_speed is None:
+        raise ValueError("the metal calibration needs --hugoniot C0 S (or --grueneisen G with "
+                         "--sound-speed) and --spall-strength")
+    return args.sound_speed, (args.grueneisen + 1) / 2
 
 
 if __name__ == "__main__":

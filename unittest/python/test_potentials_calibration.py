@@ -86,7 +86,7 @@ def test_calibration_warns_far_from_the_papers_range():
 
 @pytest.mark.parametrize("args,message", [
     (["--spall-speed", "7000"], "admits no bonded solid"),
-    (["--spall-speed", "-1"], "spall speed must be > 0"),
+    (["--spall-speed", "-1"], "spall speed must be a finite number > 0"),
     (["--lattice", "hcp"], "unknown lattice 'hcp'"),
     (["--law", "buck"], "unknown law 'buck'"),
     (["--law", "mie", "--n", "4", "--m", "6"], "need n > m > 0"),
