@@ -111,6 +111,9 @@ def test_the_committed_sets_are_the_tools_output():
         assert out.stdout == open(os.path.join(TOP, "potentials", f"{name}.cd")).read()
         # the warning that the strength-matched cut dusts before it spalls
         assert "dusts the lattice from u_cr" in out.stderr and "far below the papers'" in out.stderr
+        assert "far from the papers' sets" not in out.stderr
+    steep = tool(*SETS["al-hugoniot-10um"][:5], "5350", "4.0", *SETS["al-hugoniot-10um"][7:])
+    assert steep.returncode == 0 and "far from the papers' sets" in steep.stderr
 
 
 @pytest.mark.parametrize("units", ["si", "metal", "lj"])
