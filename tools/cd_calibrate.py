@@ -117,6 +117,23 @@ SECOND_NEIGHBOUR = {"chain": 2.0, "tri": math.sqrt(3.0), "fcc": math.sqrt(2.0)}
 SHAPE_RANGE = {"morse": (1.0, 60.0), "lj": (0.05, 20.0), "mie": (0.05, 20.0)}
 
 
+def positive(name, value):
+    """value, when a finite number > 0; else a ValueError naming the argument."""
+    if not (isinstance(value, (int, float)) and value > 0 and math.isfinite(value)):
+        raise ValueError(f"{name} must be a finite number > 0 (got {value})")
+    return value
+
+
+def finite(p):
+    """The set p, when every number in it is finite (extreme inputs overflow)."""
+    bad = [k for k in ("m", "D", "C", "rc", "vd", "ideal", "strength", "us")
+           if not math.isfinite(p[k]) or p[k] <= 0]
+    if bad:
+        raise ValueError(f"the data give non-finite or zero {', '.join(bad)} (values beyond "
+                         "double precision: check the units of density, size and speeds)")
+    return p
+
+
 def calibrate_metal(density, c0, s, strength, size, lattice="fcc", orientation="100",
                     law="morse", n=12.0, m=6.0, up=None, sound_speed=None):
     """A set matched to a metal's density, Hugoniot us = c0 + s up and spall strength on the
@@ -124,56 +141,82 @@ def calibrate_metal(density, c0, s, strength, size, lattice="fcc", orientation="
     longitudinal speed along the impact), the cut Rc the ideal tensile strength
     (cd_uniaxial.py).  Returns the set (SI) with its predictions; raises ValueError when the
     data admit no set."""
-    for name, value in (("density", density), ("Hugoniot c0", c0), ("Hugoniot s", s),
-                        ("spall strength", strength), ("size", size)):
-        if not (value > 0 and math.isfinite(value)):
-            raise ValueError(f"{name} must be a finite number > 0 (got {value})")
-    if law == "mie" and not n > m > 0:
-        raise ValueError(f"Mie exponents need n > m > 0 (got n = {n}, m = {m})")
+    for name, value in (("--density", density), ("--hugoniot C0", c0), ("--hugoniot S", s),
+                        ("--spall-strength", strength), ("--size", size)):
+        positive(name, value)
+    up = positive("--up", up) if up is not None else 0.04 * c0
+    if sound_speed is not None:
+        positive("--sound-speed", sound_speed)
     if law not in SHAPE_RANGE:
         raise ValueError(f"unknown law '{law}' (expected morse, lj or mie)")
+    if law == "mie" and not (math.isfinite(n) and n > m > 0):
+        raise ValueError(f"Mie exponents need finite --n > --m > 0 (got n = {n}, m = {m})")
     if lattice not in LATTICES:
         raise ValueError(f"unknown lattice '{lattice}' (expected chain, tri or fcc)")
     n, m = (12.0, 6.0) if law == "lj" else (n, m)
     base = cd_uniaxial.Law(law, 1.0, n, m)
     direction = cd_uniaxial.Uniaxial(lattice, orientation, base)     # checks the orientation
+    try:
+        return finite(fit(density, c0, s, strength, size, lattice, orientation, law, base,
+                          direction, up, sound_speed))
+    except (OverflowError, ZeroDivisionError, FloatingPointError):
+        raise ValueError("the data overflow double precision (check the units of density, "
+                         "size and speeds)") from None
+
+
+def fit(density, c0, s, strength, size, lattice, orientation, law, base, direction, up,
+        sound_speed):
+    """calibrate_metal's solution: shape for s, D for c0, Rc for the strength."""
     lo, hi = SHAPE_RANGE[law]
     slope = lambda k: cd_uniaxial.Uniaxial(lattice, orientation, base.with_shape(k)).slope()
-    if not slope(lo) < s < slope(hi):
-        raise ValueError(f"Hugoniot slope s = {s} is outside what {law} on {lattice} "
-                         f"[{orientation}] gives ({slope(lo):.3g} to {slope(hi):.3g})")
+    if not max(slope(lo), 0.0) < s < slope(hi):
+        raise ValueError(f"--hugoniot S = {s} is outside what {law} on {lattice} "
+                         f"[{orientation}] gives ({max(slope(lo), 0.0):.3g} to {slope(hi):.3g})")
     shape = bisect(slope, lo, hi, s)
-    d, volume = LATTICES[lattice][0], direction.volume * size ** LATTICES[lattice][0]
-    mass = density * volume
+    if abs(slope(shape) - s) > 1e-6 * s:
+        raise ValueError(f"--hugoniot S = {s}: {law} on {lattice} [{orientation}] reaches "
+                         f"only {slope(shape):.6g}")
+    d = LATTICES[lattice][0]
+    mass = density * direction.volume * size ** d
     smooth = cd_uniaxial.Uniaxial(lattice, orientation, base.with_shape(shape))
     depth = mass * (c0 / smooth.speed()) ** 2
     unit_stress = depth / size ** d
-    ideal = smooth.strength() * unit_stress
+    if not all(0 < x < math.inf for x in (mass, depth, unit_stress)):
+        raise OverflowError
     cut = lambda rc: cd_uniaxial.Uniaxial(lattice, orientation,
                                           base.with_shape(shape, rc)).strength() * unit_stress
-    rc_max = SECOND_NEIGHBOUR[lattice] - 1e-9
-    if strength >= cut(rc_max):
-        raise ValueError(f"spall strength {strength:.4g} is at or above the lattice's ideal "
-                         f"strength {cut(rc_max):.4g} (cut below the second neighbours)")
-    rc = bisect(cut, 1.0 + 1e-9, rc_max, strength)
+    rc_min, rc_max = 1.0 + 1e-6, SECOND_NEIGHBOUR[lattice] - 1e-9
+    if not cut(rc_min) < strength < cut(rc_max):
+        raise ValueError(f"--spall-strength {strength:.4g} is outside what a cut between "
+                         f"{rc_min} a and the second neighbours gives ({cut(rc_min):.4g} to "
+                         f"{cut(rc_max):.4g} {STRESS_UNIT[lattice]})")
+    rc = bisect(cut, rc_min, rc_max, strength)
     lattice_law = cd_uniaxial.Uniaxial(lattice, orientation, base.with_shape(shape, rc))
     vunit = math.sqrt(depth / mass)
-    chain_v0 = math.sqrt(2.0) * shape if law == "morse" else None
     shape_dict = ({"name": "morse"} if law == "morse" else
-                  {"name": law, "n": n, "m": m, "kappa": shape})
-    kv = shape if law == "morse" else shape * math.sqrt(n * m / 2)
+                  {"name": law, "n": base.n, "m": base.m, "kappa": shape})
+    kv = shape if law == "morse" else shape * math.sqrt(base.n * base.m / 2)
     v0 = kv * math.sqrt(2 * depth / mass)          # the chain's long-wave speed a sqrt(C/m)
-    up = c0 * 0.04 if up is None else up
+    try:
+        us = lattice_law.hugoniot(up / vunit) * vunit
+    except ValueError:
+        raise ValueError(f"--up {up:g} m/s compresses the lattice beyond half its length "
+                         "(no cold Hugoniot there)") from None
     p = {"style": shape_dict["name"] + "/spline", "law": shape_dict, "m": mass, "a": size,
          "D": depth, "C": mass * (v0 / size) ** 2, "kv": kv, "v0": v0, "density": density,
          "vd": math.sqrt(2 * depth / mass), "rc": rc, "orientation": orientation,
          "lattice": lattice, "c_impact": smooth.speed() * vunit, "s": smooth.slope(),
-         "ideal": ideal, "strength": lattice_law.strength() * unit_stress, "up": up,
-         "us": lattice_law.hugoniot(up / vunit) * vunit, "us_metal": c0 + s * up,
+         "ideal": smooth.strength() * unit_stress, "strength": cut(rc), "up": up,
+         "us": us, "us_metal": c0 + s * up,
          "ucr": 1.35 * (rc - 1) * v0, "usp": strength / (density * c0),
-         "sound_speed": sound_speed, "chain_v0": chain_v0}
+         "sound_speed": sound_speed, "inputs": (density, c0, s, strength)}
     p.update(predictions(shape_dict, kv, size))
     return in_units(p, "si")
+
+
+# the unit of a stress (force per area, per length, force) and of a density on each lattice
+STRESS_UNIT = {"fcc": "Pa", "tri": "N/m", "chain": "N"}
+DENSITY_UNIT = {"fcc": "kg/m^3", "tri": "kg/m^2", "chain": "kg/m"}
 
 
 # the papers' sets: Morse alpha a = 3.76 (the aluminium clusters) and 6 (matched to LJ)
@@ -208,11 +251,12 @@ def include_file(p, name, inputs):
     lines = [
         f"# {name}: calibrated by tools/cd_calibrate.py from {inputs} (SI)",
         f"# SI: C = {p['C']:.6g} N/m, kv = {p['kv']:.6g}, v0 = {p['v0']:.6g} m/s, "
-        f"vd = {p['vd']:.6g} m/s; the numbers below are in units {p['units']}",
+        f"vd = {p['vd']:.6g} m/s; the variables below are in units {p['units']} (pot_rc in a), "
+        "these comments in SI",
         f"# implied: cluster (lattice) density {p['density']:.6g} (the density given, on this "
         f"lattice of a), Grueneisen (chain) {p['gamma']:.4g}, break (inflection) distance "
         f"b = {p['b'] / p['a']:.4g} a, dusting onset u_cr = 1.35 (Rc - 1) v0 = "
-        f"{0.135 * p['v0']:.4g} m/s per 0.1 of Rc - 1"]
+        f"{0.135 * p['v0']:.4g} m/s per 0.1 of Rc - 1 (v0: the chain's speed a sqrt(C/m))"]
     if "rc" in p:
         lines += report(p) + [f"variable pot_rc    equal  {p['rc']!r}"]
     lines += [
@@ -226,16 +270,17 @@ def include_file(p, name, inputs):
 
 def report(p):
     """The metal calibration's matches, predictions and misses, as comment lines (SI)."""
+    unit = STRESS_UNIT[p["lattice"]]
     out = [f"# matched on {p['lattice']} [{p['orientation']}] along the impact: density, the "
            f"Hugoniot's c0 = {p['c_impact']:.5g} m/s and s = {p['s']:.4g} (weak shocks), the "
-           f"spall strength as the ideal tensile strength {p['strength']:.4g} Pa by the cut "
+           f"spall strength as the ideal tensile strength {p['strength']:.4g} {unit} by the cut "
            f"Rc = {p['rc']:.6g} a (pair_style {p['style']} cut ${{pot_rc}})",
            f"# predicted: us = {p['us']:.5g} m/s at up = {p['up']:.4g} m/s (cold lattice "
            f"Hugoniot; the metal's {p['us_metal']:.5g}); ideal strength without the cut "
-           f"{p['ideal']:.4g} Pa; vd = {p['vd']:.5g} m/s",
+           f"{p['ideal']:.4g} {unit}; vd = {p['vd']:.5g} m/s",
            f"# dusting onset u_cr = 1.35 (Rc - 1) v0 = {p['ucr']:.4g} m/s against the particle "
            f"speed that loads the spall strength, sigma / (rho c0) = {p['usp']:.4g} m/s"]
-    if p.get("sound_speed"):
+    if p.get("sound_speed") and abs(p["sound_speed"] - p["c_impact"]) > 1e-9 * p["c_impact"]:
         out.append(f"# not matched: the longitudinal speed {p['sound_speed']:.5g} m/s (the "
                    "lattice has no plastic flow: its elastic and shock waves are one, at c0)")
     return out
@@ -253,57 +298,66 @@ def metal_warnings(p):
                    "J = 10 (measured: doc/plate_impact.rst)")
     if p["rc"] < 1.05:
         out.append(f"Rc = {p['rc']:.5g} a is far below the papers' 1.05-1.3")
-    if not KV_RANGE[0] <= p["kv"] <= KV_RANGE[1]:
-        out.append(f"the shape kv = {p['kv']:.3g} (Morse alpha a) is far from the papers' sets "
-                   "(3.76 and 6): a Hugoniot slope s far from metals' 1-2")
+    if p["law"]["name"] == "morse" and not KV_RANGE[0] <= p["kv"] <= KV_RANGE[1]:
+        out.append(f"Morse alpha a = {p['kv']:.3g} is far from the papers' sets (3.76 and 6)")
     return out
 
 
+HELP_LATTICE = ("--lattice fcc: density kg/m^3, strength Pa; tri: kg/m^2, N/m; chain: kg/m, N. "
+                "--orientation: fcc 100 (default), 110, 111; tri row (default), across; chain row")
+
+
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__,
+    ap = argparse.ArgumentParser(description=__doc__, epilog=HELP_LATTICE,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--density", type=float, required=True,
                     help="mass per volume, kg/m^3 (per area kg/m^2 for tri, per length kg/m for chain)")
-    ap.add_argument("--sound-speed", type=float, help="longitudinal sound speed v_l, m/s")
+    ap.add_argument("--sound-speed", type=float,
+                    help="longitudinal sound speed v_l, m/s (metal calibration: reported, not "
+                         "matched)")
     ap.add_argument("--spall-speed", type=float,
                     help="Krivtsov's spall (minimum impactor) speed, m/s (with --sound-speed)")
     ap.add_argument("--hugoniot", type=float, nargs=2, metavar=("C0", "S"),
                     help="the Hugoniot us = C0 + S up (m/s): the metal calibration")
     ap.add_argument("--grueneisen", type=float,
-                    help="instead of --hugoniot: S = (G + 1)/2, C0 = --sound-speed")
-    ap.add_argument("--spall-strength", type=float, help="spall strength, Pa (metal calibration)")
-    ap.add_argument("--orientation", default=None,
-                    help="lattice direction along the impact (fcc: 100, 110, 111; tri: row, across)")
-    ap.add_argument("--up", type=float, help="particle speed of the predicted shock speed, m/s")
+                    help="instead of --hugoniot S: S = (G + 1)/2, with --bulk-speed C0")
+    ap.add_argument("--bulk-speed", type=float,
+                    help="with --grueneisen: the Hugoniot's C0 (the bulk sound speed), m/s")
+    ap.add_argument("--spall-strength", type=float,
+                    help="spall strength, Pa (N/m on tri, N on chain): the metal calibration")
+    ap.add_argument("--orientation", help="lattice direction along the impact (see below)")
+    ap.add_argument("--up", type=float,
+                    help="particle speed of the predicted shock speed, m/s (default 0.04 C0)")
     ap.add_argument("--size", type=float, required=True, help="cluster size = equilibrium distance a, m")
     ap.add_argument("--lattice", required=True, help="chain, tri or fcc")
     ap.add_argument("--law", default="morse", help="morse (default), lj or mie")
-    ap.add_argument("--n", type=float, default=12.0, help="Mie repulsive exponent")
-    ap.add_argument("--m", type=float, default=6.0, help="Mie attractive exponent")
+    ap.add_argument("--n", type=float, help="Mie repulsive exponent (default 12)")
+    ap.add_argument("--m", type=float, help="Mie attractive exponent (default 6)")
     ap.add_argument("--units", default="si",
                     help="LAMMPS unit style of the numbers written (default si; lj: reduced by a, m, D)")
     ap.add_argument("--name", default="calibrated", help="name for the header")
     args = ap.parse_args(argv)
-    metal = args.hugoniot is not None or args.grueneisen is not None or \
-        args.spall_strength is not None
+    metal = any(x is not None for x in (args.hugoniot, args.grueneisen, args.bulk_speed,
+                                        args.spall_strength))
     try:
-        if metal and args.spall_strength is None:
-            raise ValueError("the metal calibration needs --spall-strength (Pa) beside "
-                             "--hugoniot or --grueneisen")
+        check_arguments(args, metal)
+        n = 12.0 if args.n is None else args.n
+        m = 6.0 if args.m is None else args.m
         if metal:
-            p = calibrate_metal(args.density, *hugoniot_of(args), args.spall_strength, args.size,
-                                args.lattice, args.orientation or ORIENTATION[args.lattice],
-                                args.law, args.n, args.m, args.up, args.sound_speed)
-            inputs = (f"density {args.density}, Hugoniot {p['c_impact']:.6g} + {p['s']:.6g} up, "
-                      f"spall strength {args.spall_strength}, a {args.size}, lattice "
-                      f"{args.lattice} [{p['orientation']}], law {args.law}")
+            c0, s = hugoniot_of(args)
+            p = calibrate_metal(args.density, c0, s, args.spall_strength, args.size,
+                                args.lattice, ORIENTATION[args.lattice] if args.orientation is
+                                None else args.orientation, args.law, n, m, args.up,
+                                args.sound_speed)
+            given = (f"--hugoniot {c0:g} {s:g}" if args.hugoniot is not None else
+                     f"--grueneisen {args.grueneisen:g} --bulk-speed {c0:g}")
+            inputs = (f"density {args.density:g}, {given}, spall strength "
+                      f"{args.spall_strength:g}, a {args.size:g}, lattice {args.lattice} "
+                      f"[{p['orientation']}], law {args.law}")
             texts = metal_warnings(p)
         else:
-            if args.sound_speed is None or args.spall_speed is None:
-                raise ValueError("give --sound-speed and --spall-speed (Krivtsov's calibration) "
-                                 "or --hugoniot C0 S and --spall-strength (a metal's)")
             p = calibrate(args.density, args.sound_speed, args.spall_speed, args.size,
-                          args.lattice, args.law, args.n, args.m)
+                          args.lattice, args.law, n, m)
             inputs = (f"density {args.density}, v_l {args.sound_speed}, v_spall "
                       f"{args.spall_speed}, a {args.size}, lattice {args.lattice}, law {args.law}")
             texts = warnings(p)
@@ -318,16 +372,42 @@ def main(argv=None):
 ORIENTATION = {"chain": "row", "tri": "row", "fcc": "100"}
 
 
+def check_arguments(args, metal):
+    """Errors for arguments that do not belong together (nothing is ignored silently)."""
+    if args.lattice not in LATTICES:
+        raise ValueError(f"unknown lattice '{args.lattice}' (expected chain, tri or fcc)")
+    if "\n" in args.name or "\r" in args.name:
+        raise ValueError("--name must be one line")
+    if args.law != "mie" and (args.n is not None or args.m is not None):
+        raise ValueError(f"--n and --m belong to --law mie (got --law {args.law})")
+    if metal:
+        if args.spall_speed is not None:
+            raise ValueError("--spall-speed is Krivtsov's calibration: give it or the metal's "
+                             "--hugoniot/--grueneisen and --spall-strength, not both")
+        if args.spall_strength is None:
+            raise ValueError("the metal calibration needs --spall-strength (Pa) beside "
+                             "--hugoniot or --grueneisen")
+        return
+    for name, value in (("--orientation", args.orientation), ("--up", args.up)):
+        if value is not None:
+            raise ValueError(f"{name} belongs to the metal calibration (--hugoniot, "
+                             "--spall-strength)")
+    if args.sound_speed is None or args.spall_speed is None:
+        raise ValueError("give --sound-speed and --spall-speed (Krivtsov's calibration) "
+                         "or --hugoniot C0 S and --spall-strength (a metal's)")
+
+
 def hugoniot_of(args):
-    """(c0, s) from --hugoniot or --grueneisen."""
-    if args.hugoniot is not None and args.grueneisen is not None:
-        raise ValueError("give --hugoniot or --grueneisen, not both")
+    """(c0, s) from --hugoniot, or --grueneisen with --bulk-speed."""
     if args.hugoniot is not None:
+        if args.grueneisen is not None or args.bulk_speed is not None:
+            raise ValueError("give --hugoniot C0 S or --grueneisen G --bulk-speed C0, not both")
         return tuple(args.hugoniot)
-    if args.grueneisen is None or args.sound_speed is None:
+    if args.grueneisen is None or args.bulk_speed is None:
         raise ValueError("the metal calibration needs --hugoniot C0 S (or --grueneisen G with "
-                         "--sound-speed) and --spall-strength")
-    return args.sound_speed, (args.grueneisen + 1) / 2
+                         "--bulk-speed C0) and --spall-strength")
+    positive("--grueneisen", args.grueneisen)
+    return args.bulk_speed, (args.grueneisen + 1) / 2
 
 
 if __name__ == "__main__":

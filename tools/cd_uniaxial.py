@@ -131,6 +131,9 @@ class Uniaxial:
             us = math.sqrt(-self.stress(-eps) * self.volume / eps)
             return us, us * eps
         lo, hi = 1e-9, 0.5
+        if speeds(hi)[1] < up:
+            raise ValueError(f"up = {up:.4g} sqrt(D/m) compresses the lattice beyond half its "
+                             "length")
         for _ in range(200):
             mid = 0.5 * (lo + hi)
             lo, hi = (mid, hi) if speeds(mid)[1] < up else (lo, mid)

@@ -144,15 +144,31 @@ def test_metal_set_loads_and_gives_its_speeds(tmp_path, units):
 
 @pytest.mark.parametrize("args,message", [
     (["--hugoniot", "5350", "1.34"], "--spall-strength"),
-    (["--hugoniot", "5350", "40", "--spall-strength", "1.2e9"], "Hugoniot slope s = 40.0"),
-    (["--hugoniot", "5350", "1.34", "--spall-strength", "1e12"], "ideal strength"),
+    (["--hugoniot", "5350", "40", "--spall-strength", "1.2e9"], "--hugoniot S = 40.0"),
+    (["--hugoniot", "5350", "1.34", "--spall-strength", "1e12"], "--spall-strength 1e+12 is "
+     "outside"),
+    (["--hugoniot", "5350", "1.34", "--spall-strength", "1"], "--spall-strength 1 is outside"),
     (["--hugoniot", "5350", "1.34", "--spall-strength", "1.2e9", "--orientation", "112"],
      "orientation '112'"),
     (["--hugoniot", "5350", "1.34", "--grueneisen", "2", "--spall-strength", "1.2e9"],
      "not both"),
-    (["--hugoniot", "-5350", "1.34", "--spall-strength", "1.2e9"], "Hugoniot c0 must be a finite"),
-    (["--hugoniot", "5350", "1.34", "--spall-strength", "inf"], "spall strength must be a finite"),
-    (["--grueneisen", "2.0", "--spall-strength", "1.2e9"], "--sound-speed"),
+    (["--hugoniot", "-5350", "1.34", "--spall-strength", "1.2e9"], "--hugoniot C0 must be a finite"),
+    (["--hugoniot", "5350", "1.34", "--spall-strength", "inf"], "--spall-strength must be a finite"),
+    (["--grueneisen", "2.0", "--spall-strength", "1.2e9"], "--bulk-speed"),
+    (["--hugoniot", "5350", "1.34", "--spall-strength", "1.2e9", "--up", "nan"], "--up must be"),
+    (["--hugoniot", "5350", "1.34", "--spall-strength", "1.2e9", "--up", "1e5"],
+     "--up 100000 m/s compresses"),
+    (["--hugoniot", "5350", "1.34", "--spall-strength", "1.2e9", "--spall-speed", "1500"],
+     "not both"),
+    (["--hugoniot", "5350", "1.34", "--spall-strength", "1.2e9", "--law", "mie", "--n",
+      "6.000001", "--m", "6"], "reaches only"),
+    (["--hugoniot", "5350", "1.34", "--spall-strength", "1.2e9", "--law", "lj", "--n", "9"],
+     "--n and --m belong to --law mie"),
+    (["--hugoniot", "1e300", "1.34", "--spall-strength", "1.2e9"], "overflow"),
+    (["--hugoniot", "5350", "1.34", "--spall-strength", "1.2e9", "--name", "a\nprint x"],
+     "--name must be one line"),
+    (["--sound-speed", "6420", "--spall-speed", "1500", "--up", "200"],
+     "--up belongs to the metal calibration"),
 ])
 def test_metal_calibration_errors_name_the_argument(args, message):
     out = tool("--density", "2700", "--size", "1e-5", "--lattice", "fcc", *args)
@@ -160,11 +176,13 @@ def test_metal_calibration_errors_name_the_argument(args, message):
 
 
 def test_grueneisen_gives_s_and_other_orientations():
-    """--grueneisen G: s = (G + 1)/2 with c0 the sound speed given; [111] and the triangular
+    """--grueneisen G: s = (G + 1)/2 with c0 from --bulk-speed; [111] and the triangular
     lattice match the same Hugoniot and strength with their own alpha a and cut."""
-    out = tool("--density", "2700", "--sound-speed", "5350", "--grueneisen", "1.68",
-               "--spall-strength", "1.2e9", "--size", "1e-5", "--lattice", "fcc")
-    assert out.returncode == 0 and "s = 1.34" in out.stdout
+    out = tool("--density", "2700", "--sound-speed", "6420", "--grueneisen", "1.68",
+               "--bulk-speed", "5350", "--spall-strength", "1.2e9", "--size", "1e-5",
+               "--lattice", "fcc")
+    assert out.returncode == 0 and "s = 1.34" in out.stdout and "c0 = 5350" in out.stdout
+    assert "not matched: the longitudinal speed 6420" in out.stdout
     for lattice, orient in (("fcc", "111"), ("tri", "row"), ("tri", "across")):
         density = 2700.0 if lattice == "fcc" else 2700.0 * 1e-5
         p = cd_calibrate.calibrate_metal(density, 5350.0, 1.34, 1.2e9 if lattice == "fcc" else
