@@ -10,6 +10,7 @@
 #define LMP_CLUSTERDYN_SPLINE_KERNEL_H
 
 #include "pair_state.h"
+#include "spline_block.h"
 #include "spline_links.h"
 #include "xyz3.h"
 
@@ -44,7 +45,9 @@ namespace ClusterDyn {
 
   // the pairs of list entries iifrom..iito-1: forces into f, energy and virial through
   // tally(i, j, nlocal, newton, evdwl, fpair, dx, dy, dz), state changes into changes;
-  // singular(i, j, rsq) stops at a pair inside the law's singular distance
+  // singular(i, j, rsq) stops at a pair inside the law's singular distance.
+  // Blocks of pairs (spline_block.h): the vector stage computes separations and the law with
+  // its tail; this loop then applies the link rule and scatters in list order.
   template <class Law, class TailT, int MODE, int EVFLAG, int EFLAG, int NEWTON_PAIR, class Tally,
             class Singular>
   void spline_kernel(const SplineKernelData &k, const NeighList *list, const Atom *atom,
@@ -54,72 +57,113 @@ namespace ClusterDyn {
   {
     constexpr bool LINKED = SplineMode::link(MODE);
     constexpr bool KAPPA_ON = SplineMode::kappa(MODE);
+    constexpr bool CHAIN = MODE == SplineMode::CHAIN;
     const tagint *_noalias const tag = atom->tag;
     const auto *_noalias const x = (xyz3 *) atom->x[0];
     const int *_noalias const type = atom->type;
     const int nlocal = atom->nlocal;
     const int ntp1 = atom->ntypes + 1;
+    const bool uniform = atom->ntypes == 1;
     const int *_noalias const ilist = list->ilist;
     const int *_noalias const numneigh = list->numneigh;
     int **firstneigh = list->firstneigh;
     const SplineCoeff *_noalias const coeffs = k.coeffs;
     const LinkCoeff *const link_coeffs = k.link_coeffs;
     const Making making = k.making;
-    const int chain_n = k.chain_n;
-    const double *const chain_scale = k.chain_scale;
     int *const *const words = pass.words;
     const tagint *const fresh = pass.fresh;
     const int trial = pass.trial;
-    double evdwl = 0.0;
+    SplineBlock b;
 
-    for (int ii = iifrom; ii < iito; ii++) {
-      const int i = ilist[ii];
-      const double xtmp = x[i].x, ytmp = x[i].y, ztmp = x[i].z;
-      const SplineCoeff *_noalias const ci = coeffs + type[i] * ntp1;
-      const LinkCoeff *const lci = LINKED ? link_coeffs + type[i] * ntp1 : nullptr;
-      const int *_noalias const jlist = firstneigh[i];
-      const int jnum = numneigh[i];
-      double fxtmp = 0.0, fytmp = 0.0, fztmp = 0.0;
-
-      for (int jj = 0; jj < jnum; jj++) {
-        int j = jlist[jj];
-        const double factor_lj = special_lj[j >> SBBITS & 3];
-        j &= NEIGHMASK;
-        const double delx = xtmp - x[j].x;
-        const double dely = ytmp - x[j].y;
-        const double delz = ztmp - x[j].z;
-        const double rsq = delx * delx + dely * dely + delz * delz;
-        const SplineCoeff &c = ci[type[j]];
-        double scale = 1.0;    // chain: the n-th neighbour along the chain feels Pi(r/n)
-        if (MODE == SplineMode::CHAIN) {
-          const tagint n = chain_distance(tag[i], tag[j]);
-          if (n == 0 || n > chain_n) continue;
-          scale = chain_scale[n];
+    // f[i] is summed over i's pairs first, across blocks, as a scalar loop would
+    int icur = -1;
+    double fxtmp = 0.0, fytmp = 0.0, fztmp = 0.0;
+    int ii = iifrom, jjnext = 0;
+    while (ii < iito) {
+      // fill: list entries from (ii, jjnext) on, with their separations; without link state
+      // only the pairs inside the interaction end (chain N: only chain neighbours)
+      b.n = 0;
+      while (ii < iito && b.n < SplineBlock::SIZE) {
+        const int i = ilist[ii];
+        const double xtmp = x[i].x, ytmp = x[i].y, ztmp = x[i].z;
+        const int tpi = type[i] * ntp1;
+        const int *_noalias const jlist = firstneigh[i];
+        const int jnum = numneigh[i];
+        int jj = jjnext;
+        for (; jj < jnum && b.n < SplineBlock::SIZE; jj++) {
+          const int jraw = jlist[jj];
+          const int j = jraw & NEIGHMASK;
+          const double delx = xtmp - x[j].x;
+          const double dely = ytmp - x[j].y;
+          const double delz = ztmp - x[j].z;
+          double rsq = delx * delx + dely * dely + delz * delz;
+          double scale = 1.0;    // chain: the n-th neighbour along the chain feels Pi(r/n)
+          if (CHAIN) {
+            const tagint nc = chain_distance(tag[i], tag[j]);
+            if (nc == 0 || nc > k.chain_n) continue;
+            scale = k.chain_scale[nc];
+            rsq *= scale;
+          }
+          const int tp = tpi + type[j];
+          if (!LINKED && rsq >= coeffs[tp].cutsq) continue;
+          const int m = b.n++;
+          b.i[m] = i;
+          b.jraw[m] = jraw;
+          b.jj[m] = jj;
+          b.tp[m] = tp;
+          b.delx[m] = delx;
+          b.dely[m] = dely;
+          b.delz[m] = delz;
+          b.rsq[m] = rsq;
+          b.scale[m] = scale;
         }
-        const double rsq_law = MODE == SplineMode::CHAIN ? rsq * scale : rsq;
-        double e, fpair;
+        if (jj == jnum) {
+          ii++;
+          jjnext = 0;
+        } else
+          jjnext = jj;
+      }
+      if (b.n == 0) break;
+      if (uniform) b.compute<Law, TailT, KAPPA_ON, true>(coeffs, ntp1);
+      else b.compute<Law, TailT, KAPPA_ON, false>(coeffs, ntp1);
+
+      // scatter, in list order: the link rule, special factors, forces, tallies
+      for (int p = 0; p < b.n; p++) {
+        const int i = b.i[p];
+        const int j = b.jraw[p] & NEIGHMASK;
+        if (i != icur) {
+          if (icur >= 0) {
+            f[icur].x += fxtmp;
+            f[icur].y += fytmp;
+            f[icur].z += fztmp;
+          }
+          icur = i;
+          fxtmp = fytmp = fztmp = 0.0;
+        }
+        const double rsq = b.rsq[p];
+        double e = b.e[p], fpair = b.fpair[p];
         if constexpr (LINKED) {
-          int &word = words[i][jj];
+          const SplineCoeff &c = coeffs[b.tp[p]];
+          int &word = words[i][b.jj[p]];
           const Making now = fresh && (!fresh[i] || !fresh[j]) ? MAKE_INITIAL : making;
           const double w = NEWTON_PAIR || j < nlocal ? 1.0 : 0.5;
-          const LinkCoeff &lc = lci[type[j]];
+          const LinkCoeff &lc = link_coeffs[b.tp[p]];
           bool on;
           if (!trial) {    // the word is the state
-            on = SplineLinks::eval<TailT, KAPPA_ON, Law>(c, lc, rsq_law, word, now, w, changes, e,
-                                                         fpair);
+            on = SplineLinks::eval<TailT, KAPPA_ON, Law>(c, lc, rsq, word, now, w, changes,
+                                                         b.e[p], b.fpair[p], e, fpair);
           } else {    // a minimizer's trial point: the change is only marked
             int linked = word & 1;
-            on = SplineLinks::eval<TailT, KAPPA_ON, Law>(c, lc, rsq_law, linked, now, w, changes,
-                                                         e, fpair);
+            on = SplineLinks::eval<TailT, KAPPA_ON, Law>(c, lc, rsq, linked, now, w, changes,
+                                                         b.e[p], b.fpair[p], e, fpair);
             word = state_word(word, linked, 1);
           }
           if (!on) continue;
-        } else {
-          if (rsq_law >= c.cutsq) continue;
-          e = TailT::template eval<KAPPA_ON, Law>(c, rsq_law, fpair) - c.offset;
         }
-        if (rsq_law <= c.hardsq) singular(i, j, rsq);
-        fpair *= factor_lj * scale;
+        if (rsq <= coeffs[b.tp[p]].hardsq) singular(i, j, rsq / b.scale[p]);
+        const double factor_lj = special_lj[b.jraw[p] >> SBBITS & 3];
+        fpair *= factor_lj * b.scale[p];
+        const double delx = b.delx[p], dely = b.dely[p], delz = b.delz[p];
         fxtmp += delx * fpair;
         fytmp += dely * fpair;
         fztmp += delz * fpair;
@@ -128,12 +172,13 @@ namespace ClusterDyn {
           f[j].y -= dely * fpair;
           f[j].z -= delz * fpair;
         }
-        if (EFLAG) evdwl = factor_lj * e;
-        if (EVFLAG) tally(i, j, nlocal, NEWTON_PAIR, evdwl, fpair, delx, dely, delz);
+        if (EVFLAG) tally(i, j, nlocal, NEWTON_PAIR, EFLAG ? factor_lj * e : 0.0, fpair, delx, dely, delz);
       }
-      f[i].x += fxtmp;
-      f[i].y += fytmp;
-      f[i].z += fztmp;
+    }
+    if (icur >= 0) {
+      f[icur].x += fxtmp;
+      f[icur].y += fytmp;
+      f[icur].z += fztmp;
     }
   }
 

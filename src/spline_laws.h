@@ -18,6 +18,7 @@
 #define LMP_CLUSTERDYN_SPLINE_LAWS_H
 
 #include "arg_values.h"
+#include "vector_math.h"    // before the laws use exp and pow
 #include "error.h"
 #include "pointers.h"
 #include "utils.h"

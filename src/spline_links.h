@@ -56,10 +56,12 @@ namespace ClusterDyn {
     }
 
     // energy (shifted) and fpair of a pair, updating its state linked; false when the pair
-    // does not interact.  w: the pair's weight in the tally t.
+    // does not interact.  et, ft: the law with the tail at rsq, shifted (the kernel's vector
+    // stage; valid for rsq < c.cutsq).  w: the pair's weight in the tally t.
     template <class Tail, bool KAPPA, class Law>
     static inline bool eval(const SplineCoeff &c, const LinkCoeff &k, double rsq, int &linked,
-                            int making, double w, StateTally &t, double &e, double &fpair)
+                            int making, double w, StateTally &t, double et, double ft,
+                            double &e, double &fpair)
     {
       if (linked) {
         if (rsq >= c.cutsq) {
@@ -74,11 +76,12 @@ namespace ClusterDyn {
           double f;
           const double eu = rsq < k.asq ? Law::template eval<KAPPA>(c, rsq, f) - k.ea : 0.0;
           t.formed += w;
-          t.ejump += w * (Tail::template eval<KAPPA, Law>(c, rsq, f) - c.offset - eu);
+          t.ejump += w * (et - eu);
         }
       }
       if (linked) {
-        e = Tail::template eval<KAPPA, Law>(c, rsq, fpair) - c.offset;
+        e = et;
+        fpair = ft;
         return true;
       }
       if (rsq >= k.asq) return false;
