@@ -33,11 +33,11 @@ namespace ClusterDyn {
     // filled by the kernel, one list entry after another
     alignas(64) int i[SIZE];
     alignas(64) int jraw[SIZE];    // the list entry: j with its special bits
-    alignas(64) int jj[SIZE];      // the entry's place in i's list (link state words)
+    alignas(64) int jj[SIZE];      // link L: the entry's place in i's list (state words)
     alignas(64) int tp[SIZE];      // the type pair: type[i] * (ntypes + 1) + type[j]
     alignas(64) double delx[SIZE], dely[SIZE], delz[SIZE];
     alignas(64) double rsq[SIZE];     // of the law: chain N scales it by 1/n^2
-    alignas(64) double scale[SIZE];   // chain N: 1/n^2; else 1
+    alignas(64) double scale[SIZE];   // chain N: 1/n^2
     int n = 0;
     // written by compute()
     alignas(64) double fpair[SIZE];   // f(r)/r of the law with its tail (0 outside its end)
@@ -45,8 +45,10 @@ namespace ClusterDyn {
 
     // the vector stage: the law with its tail at every rsq; UNIFORM: every pair has the
     // coefficients c0 (one atom type), else those of tp.  Pairs beyond the interaction end
-    // (rsq >= cutsq > 0: finite values) are zeroed by a factor 0, not by a select of a bool:
-    // GCC 12 vectorizes bool masks only with AVX-512's mask registers.  (It does not
+    // are zeroed by a factor 0, not by a select of a bool: GCC 12 vectorizes bool masks only
+    // with AVX-512's mask registers.  (Without link state the block holds only pairs inside
+    // the end; with it, a value beyond the end may be 0 x inf = NaN, and the link rule never
+    // reads it.)  (It does not
     // vectorize the branches of the wagner and lagunov tails without AVX-512 either: there
     // they run one pair after another.)
     // Every block is computed whole, the entries past n padded with the first one: a pair's

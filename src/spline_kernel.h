@@ -104,18 +104,18 @@ namespace ClusterDyn {
             scale = k.chain_scale[nc];
             rsq *= scale;
           }
-          const int tp = tpi + type[j];
+          const int tp = uniform ? ntp1 + 1 : tpi + type[j];
           if (!LINKED && rsq >= coeffs[tp].cutsq) continue;
           const int m = b.n++;
           b.i[m] = i;
           b.jraw[m] = jraw;
-          b.jj[m] = jj;
+          if (LINKED) b.jj[m] = jj;
           b.tp[m] = tp;
           b.delx[m] = delx;
           b.dely[m] = dely;
           b.delz[m] = delz;
           b.rsq[m] = rsq;
-          b.scale[m] = scale;
+          if (CHAIN) b.scale[m] = scale;
         }
         if (jj == jnum) {
           ii++;
@@ -160,9 +160,10 @@ namespace ClusterDyn {
           }
           if (!on) continue;
         }
-        if (rsq <= coeffs[b.tp[p]].hardsq) singular(i, j, rsq / b.scale[p]);
+        const double scale = CHAIN ? b.scale[p] : 1.0;
+        if (rsq <= coeffs[b.tp[p]].hardsq) singular(i, j, rsq / scale);
         const double factor_lj = special_lj[b.jraw[p] >> SBBITS & 3];
-        fpair *= factor_lj * b.scale[p];
+        fpair *= factor_lj * scale;
         const double delx = b.delx[p], dely = b.dely[p], delz = b.delz[p];
         fxtmp += delx * fpair;
         fytmp += dely * fpair;
