@@ -22,7 +22,6 @@
 #include "fix_viscous_relative.h"
 
 #include "pair_state.h"
-#include "viscous_block.h"
 #include "xyz3.h"
 #include "skin_check.h"
 
@@ -230,8 +229,7 @@ FixViscousRelative::Bonds FixViscousRelative::current_bonds() const
 }
 
 // GENERAL: per-atom masses or a group other than all (else: per-type masses, group all);
-// LINKED: only the pair style's linked pairs.  Blocks of pairs (viscous_block.h): this loop
-// copies the damped pairs, the block computes their forces, this loop scatters them.
+// LINKED: only the pair style's linked pairs
 template <int NORMAL, int DPD, int GENERAL, int LINKED>
 void FixViscousRelative::damp(const Bonds &bonds)
 {
@@ -246,69 +244,42 @@ void FixViscousRelative::damp(const Bonds &bonds)
   const int ntp1 = atom->ntypes + 1;
   const NeighList *const list = bonds.list;
   const int inum = list->inum;
-  ViscousBlock b;
 
-  int icur = -1;
-  double fxtmp = 0.0, fytmp = 0.0, fztmp = 0.0;
-  int ii = 0, jjnext = 0;
-  while (ii < inum) {
-    b.n = 0;
-    while (ii < inum && b.n < ViscousBlock::SIZE) {
-      const int i = list->ilist[ii];
-      const int jnum = list->numneigh[i];
-      if (GENERAL && !(mask[i] & groupbit)) {
-        ii++;
-        continue;
-      }
-      const TypePair *tpi = typepair + type[i] * ntp1;
-      const double xtmp = x[i].x, ytmp = x[i].y, ztmp = x[i].z;
-      const double vxtmp = v[i].x, vytmp = v[i].y, vztmp = v[i].z;
-      const int *jlist = list->firstneigh[i];
-      int jj = jjnext;
-      for (; jj < jnum && b.n < ViscousBlock::SIZE; jj++) {
-        const int j = jlist[jj] & NEIGHMASK;
-        const double delx = xtmp - x[j].x;
-        const double dely = ytmp - x[j].y;
-        const double delz = ztmp - x[j].z;
-        const double rsq = delx * delx + dely * dely + delz * delz;
-        const TypePair &tp = tpi[type[j]];
-        if (rsq >= tp.cutsq || (GENERAL && !(mask[j] & groupbit))) continue;
-        if (LINKED && !state_now(bonds.words[i][jj])) continue;
-        if (NORMAL && rsq < 1e-20 * tp.cutsq) continue;    // coincident: no normal direction
-        const int m = b.n++;
-        b.i[m] = i;
-        b.j[m] = j;
-        b.delx[m] = delx;
-        b.dely[m] = dely;
-        b.delz[m] = delz;
-        b.dvx[m] = vxtmp - v[j].x;
-        b.dvy[m] = vytmp - v[j].y;
-        b.dvz[m] = vztmp - v[j].z;
-        b.rsq[m] = rsq;
-        b.coef[m] = GENERAL && rmass ? friction(tp, rmass[i], rmass[j]) : tp.coef;
-        b.inv_cut[m] = tp.inv_cut;
-      }
-      if (jj == jnum) {
-        ii++;
-        jjnext = 0;
-      } else
-        jjnext = jj;
-    }
-    if (b.n == 0) break;
-    b.compute<NORMAL, DPD>();
+  for (int ii = 0; ii < inum; ii++) {
+    const int i = list->ilist[ii];
+    if (GENERAL && !(mask[i] & groupbit)) continue;
+    const TypePair *tpi = typepair + type[i] * ntp1;
+    const double xtmp = x[i].x, ytmp = x[i].y, ztmp = x[i].z;
+    const double vxtmp = v[i].x, vytmp = v[i].y, vztmp = v[i].z;
+    double fxtmp = 0.0, fytmp = 0.0, fztmp = 0.0;
+    const int *jlist = list->firstneigh[i];
+    const int jnum = list->numneigh[i];
+    for (int jj = 0; jj < jnum; jj++) {
+      const int j = jlist[jj] & NEIGHMASK;
+      const double delx = xtmp - x[j].x;
+      const double dely = ytmp - x[j].y;
+      const double delz = ztmp - x[j].z;
+      const double rsq = delx * delx + dely * dely + delz * delz;
+      const TypePair &tp = tpi[type[j]];
+      if (rsq >= tp.cutsq || (GENERAL && !(mask[j] & groupbit))) continue;
+      if (LINKED && !state_now(bonds.words[i][jj])) continue;
 
-    for (int p = 0; p < b.n; p++) {
-      const int i = b.i[p], j = b.j[p];
-      if (i != icur) {
-        if (icur >= 0) {
-          fdamp[icur].x += fxtmp;
-          fdamp[icur].y += fytmp;
-          fdamp[icur].z += fztmp;
-        }
-        icur = i;
-        fxtmp = fytmp = fztmp = 0.0;
+      double coef = GENERAL && rmass ? friction(tp, rmass[i], rmass[j]) : tp.coef;
+      if (DPD) {
+        const double w = 1.0 - sqrt(rsq) * tp.inv_cut;
+        coef *= w * w;
       }
-      const double fx = b.fx[p], fy = b.fy[p], fz = b.fz[p];
+      double dvx = vxtmp - v[j].x;
+      double dvy = vytmp - v[j].y;
+      double dvz = vztmp - v[j].z;
+      if (NORMAL) {
+        if (rsq < 1e-20 * tp.cutsq) continue;    // coincident: no normal direction
+        const double proj = (dvx * delx + dvy * dely + dvz * delz) / rsq;
+        dvx = proj * delx;
+        dvy = proj * dely;
+        dvz = proj * delz;
+      }
+      const double fx = -coef * dvx, fy = -coef * dvy, fz = -coef * dvz;
       fxtmp += fx;
       fytmp += fy;
       fztmp += fz;
@@ -318,17 +289,14 @@ void FixViscousRelative::damp(const Bonds &bonds)
         fdamp[j].z -= fz;
       }
       if (vflag_global) {
-        const double delx = b.delx[p], dely = b.dely[p], delz = b.delz[p];
         int pair[2] = {i, j};
         double vir[6] = {delx * fx, dely * fy, delz * fz, delx * fy, delx * fz, dely * fz};
         v_tally((newton_pair || j < nlocal) ? 2 : 1, pair, 2.0, vir);
       }
     }
-  }
-  if (icur >= 0) {
-    fdamp[icur].x += fxtmp;
-    fdamp[icur].y += fytmp;
-    fdamp[icur].z += fztmp;
+    fdamp[i].x += fxtmp;
+    fdamp[i].y += fytmp;
+    fdamp[i].z += fztmp;
   }
 }
 

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The 3D shock-dusting study of the cluster-dynamics paper (section 3) on in.shock3d.
+"""The 3D shock-dusting study of the cluster-dynamics paper (section 1) on in.shock3d.
 
     source build/env.sh; /usr/bin/python3 examples/shock-3d/run_sweep.py [--jobs 2]
 
