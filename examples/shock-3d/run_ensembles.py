@@ -107,11 +107,16 @@ def run_logged(var):
     return var
 
 
-def main():
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[1])
+def arguments(doc):
+    """--jobs N (runs at a time) and --report (tables and plots from the cached runs only)."""
+    ap = argparse.ArgumentParser(description=doc.split("\n")[1])
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--report", action="store_true")
-    args = ap.parse_args()
+    return ap.parse_args()
+
+
+def main():
+    args = arguments(__doc__)
     if not args.report:
         start, count = time.time(), 0
         for phase in phases():

@@ -17,7 +17,6 @@ so an interrupted study continues, in another checkout too):
 --report writes thresholds.md and thresholds.png from the cached runs only and lists what is
 not run yet.
 """
-import argparse
 import json
 import multiprocessing
 import os
@@ -26,7 +25,7 @@ import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
-from run_ensembles import cached, run_logged  # noqa: E402
+from run_ensembles import arguments, cached, run_logged  # noqa: E402
 from run_sweep import PAPER_UCR  # noqa: E402
 
 SEEDS = [1, 2, 3, 4, 5]
@@ -106,10 +105,7 @@ def keep(runs):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[1])
-    ap.add_argument("--jobs", type=int, default=2)
-    ap.add_argument("--report", action="store_true")
-    args = ap.parse_args()
+    args = arguments(__doc__)
     if not args.report:
         start = time.time()
         for phase in phases():
