@@ -3,7 +3,8 @@ pow in a `#pragma omp simd` loop, the instruction set chosen at build time
 (CLUSTERDYN_SIMD_ARCH, default native).  The plugin built for a CPU without AVX-512
 (unittest's clusterdyn_avx2.so, -march=x86-64-v3) gives the same forces, energies and virials
 as the native build to 1e-12 on a hot block for every law, tail and mode, and holds no
-AVX-512 instruction.  (Agreement with the stock scalar styles: test_pair_spline_stock.py.)"""
+AVX-512 instruction; both equal stock morse to 1e-12 (more stock comparisons:
+test_pair_spline_stock.py)."""
 import os
 import re
 import subprocess
@@ -84,6 +85,17 @@ def test_avx2_build_equals_native(tmp_path, case):
     avx2 = run(tmp_path / "avx2", AVX2, pair, coeff, ntypes)
     assert_close(native[0], avx2[0], 1e-12)           # pe, pressure tensor
     assert_close(native[1], avx2[1], 1e-12)           # forces, per-atom energy and virial
+
+
+@pytest.mark.skipif(not os.path.isfile(AVX2), reason="clusterdyn_avx2.so not built")
+@pytest.mark.parametrize("plugin", [PLUGIN, AVX2], ids=["native", "avx2"])
+def test_both_builds_equal_stock_morse(tmp_path, plugin):
+    """Each build against LAMMPS's scalar morse on the same hot block (two atom types): the
+    oracle that is not this package's code."""
+    ours = run(tmp_path / "ours", plugin, *CASES["morse cut"], ntypes=2)
+    stock = run(tmp_path / "stock", plugin, f"morse {1.4 * A}", f"{D} {ALPHA} {A}", ntypes=2)
+    assert_close(stock[0], ours[0], 1e-12)
+    assert_close(stock[1], ours[1], 1e-12)
 
 
 @pytest.mark.skipif(not os.path.isfile(AVX2), reason="clusterdyn_avx2.so not built")
