@@ -11,7 +11,11 @@
    (r < 1e-10 of the damping range) have no normal: mode normal skips them,
    as pair dpd/tstat does.  post_force() sums them on a half
    neighbor list into fd (own and ghost atoms), adds the ghost parts to
-   their owners (reverse communication), then adds fd to f.
+   their owners (reverse communication), then adds fd to f.  Where its
+   pairs are exactly a spline pair style's, that style's force pass sums
+   them instead, on the steps without energy or virial tallies
+   (damping_pass.h): the same fd, bit for bit, without a second walk over
+   the neighbour list.
 
    Energy removed: velocity Verlet applies a force F computed at step k in
    two half kicks, v(k-1/2) -> v(k) -> v(k+1/2); the work of each half kick
@@ -46,7 +50,7 @@ using namespace ClusterDyn;
 
 FixViscousRelative::FixViscousRelative(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), opt(ViscousSettings::parse(lmp, narg, arg)), typepair(nullptr),
-    fd(nullptr), maxfd(0),
+    coeff(nullptr), fused(0), fd(nullptr), maxfd(0),
     removed(0.0), power_full(0.0), list(nullptr), state(nullptr)
 {
   scalar_flag = 1;
@@ -57,17 +61,22 @@ FixViscousRelative::FixViscousRelative(LAMMPS *lmp, int narg, char **arg) :
   restart_global = 1;
   comm_reverse = 3;
   typepair = new TypePair[(atom->ntypes + 1) * (atom->ntypes + 1)]();
+  coeff = new DampingCoeff[(atom->ntypes + 1) * (atom->ntypes + 1)]();
+  pass.normal = opt.normal;
+  pass.dpd = opt.dpd;
+  pass.coeff = coeff;
 }
 
 FixViscousRelative::~FixViscousRelative()
 {
   delete[] typepair;
+  delete[] coeff;
   memory->destroy(fd);
 }
 
 int FixViscousRelative::setmask()
 {
-  return POST_FORCE | POST_INTEGRATE | END_OF_STEP;
+  return PRE_FORCE | POST_FORCE | POST_INTEGRATE | END_OF_STEP;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -97,10 +106,13 @@ void FixViscousRelative::init()
     for (int j = 1; j <= ntypes; j++) {
       TypePair &tp = typepair[i * (ntypes + 1) + j];
       tp.cutsq = opt.cutoff > 0.0 ? opt.cutoff * opt.cutoff : force->pair->cutsq[i][j];
-      tp.inv_cut = tp.cutsq > 0.0 ? 1.0 / sqrt(tp.cutsq) : 0.0;
       tp.stiffness = opt.by_j ? stiffness[i][j] : 0.0;
-      tp.coef = atom->rmass ? 0.0 : friction(tp, atom->mass[i], atom->mass[j]);
+      DampingCoeff &c = coeff[i * (ntypes + 1) + j];
+      c.inv_cut = tp.cutsq > 0.0 ? 1.0 / sqrt(tp.cutsq) : 0.0;
+      c.coef = atom->rmass ? 0.0 : friction(tp, atom->mass[i], atom->mass[j]);
     }
+  fused = claim_pass();
+  pass.fd = nullptr;
 
   if (opt.cutoff > 0.0)
     check_neighbor_skin(lmp, force->pair ? MAX(opt.cutoff, force->pair->cutforce) : opt.cutoff,
@@ -129,6 +141,23 @@ void FixViscousRelative::init_list(int, NeighList *ptr)
   list = ptr;
 }
 
+// the pair style's force pass damps the pairs this fix would: every pair of its list inside
+// the pair's cutoffs, per-type masses, group all; the first such fix takes the slot
+int FixViscousRelative::claim_pass()
+{
+  if (!force->pair || opt.cutoff > 0.0 || state || atom->rmass || groupbit != 1 ||
+      utils::strmatch(force->pair_style, "^hybrid"))
+    return 0;
+  int dim = 0;
+  auto slot = (DampingPass **) force->pair->extract("damping_pass", dim);
+  if (!slot || *slot) return 0;
+  *slot = &pass;
+  if (comm->me == 0)
+    utils::logmesg(lmp, "Fix viscous/relative {}: damping summed in pair {}'s force pass\n", id,
+                   force->pair_style);
+  return 1;
+}
+
 /* ---------------------------------------------------------------------- */
 
 void FixViscousRelative::setup(int vflag)
@@ -137,9 +166,27 @@ void FixViscousRelative::setup(int vflag)
   power_full = compute_forces(vflag);    // v(0): no kick before the first output
 }
 
+// offer the pair style's force pass fd, unless this step tallies the fix's virial
+void FixViscousRelative::pre_force(int vflag)
+{
+  pass.fd = nullptr;
+  pass.filled = 0;
+  if (!fused || (vflag && thermo_virial)) return;
+  clear_fd();
+  pass.fd = (xyz3 *) fd[0];
+}
+
 void FixViscousRelative::post_force(int vflag)
 {
-  removed -= 0.25 * update->dt * compute_forces(vflag);    // first half kick, v(k-1/2) side
+  double power_now;    // v(k-1/2) side of the first half kick
+  if (pass.filled) {
+    v_init(vflag);    // no virial: the pass is offered only without it
+    power_now = add_forces();
+  } else
+    power_now = compute_forces(vflag);
+  pass.fd = nullptr;
+  pass.filled = 0;
+  removed -= 0.25 * update->dt * power_now;
 }
 
 void FixViscousRelative::end_of_step()
@@ -205,9 +252,13 @@ double FixViscousRelative::compute_forces(int vflag)
   using I1 = std::integral_constant<int, 1>;
   if (opt.normal) opt.dpd ? run(I1(), I1()) : run(I1(), I0());
   else opt.dpd ? run(I0(), I1()) : run(I0(), I0());
-  if (force->newton_pair) comm->reverse_comm(this);
+  return add_forces();
+}
 
-  // add to the forces; return the power sum fd . v of my atoms
+// fd's ghost parts to their owners, fd into the forces; the power sum fd . v of my atoms
+double FixViscousRelative::add_forces()
+{
+  if (force->newton_pair) comm->reverse_comm(this);
   double **f = atom->f;
   const double *const *const v = atom->v;
   double p = 0.0;
@@ -249,6 +300,7 @@ void FixViscousRelative::damp(const Bonds &bonds)
     const int i = list->ilist[ii];
     if (GENERAL && !(mask[i] & groupbit)) continue;
     const TypePair *tpi = typepair + type[i] * ntp1;
+    const DampingCoeff *ci = coeff + type[i] * ntp1;
     const double xtmp = x[i].x, ytmp = x[i].y, ztmp = x[i].z;
     const double vxtmp = v[i].x, vytmp = v[i].y, vztmp = v[i].z;
     double fxtmp = 0.0, fytmp = 0.0, fztmp = 0.0;
@@ -264,22 +316,11 @@ void FixViscousRelative::damp(const Bonds &bonds)
       if (rsq >= tp.cutsq || (GENERAL && !(mask[j] & groupbit))) continue;
       if (LINKED && !state_now(bonds.words[i][jj])) continue;
 
-      double coef = GENERAL && rmass ? friction(tp, rmass[i], rmass[j]) : tp.coef;
-      if (DPD) {
-        const double w = 1.0 - sqrt(rsq) * tp.inv_cut;
-        coef *= w * w;
-      }
-      double dvx = vxtmp - v[j].x;
-      double dvy = vytmp - v[j].y;
-      double dvz = vztmp - v[j].z;
-      if (NORMAL) {
-        if (rsq < 1e-20 * tp.cutsq) continue;    // coincident: no normal direction
-        const double proj = (dvx * delx + dvy * dely + dvz * delz) / rsq;
-        dvx = proj * delx;
-        dvy = proj * dely;
-        dvz = proj * delz;
-      }
-      const double fx = -coef * dvx, fy = -coef * dvy, fz = -coef * dvz;
+      const DampingCoeff &c = ci[type[j]];
+      const double coef = GENERAL && rmass ? friction(tp, rmass[i], rmass[j]) : c.coef;
+      double fx, fy, fz;
+      damping_force<NORMAL, DPD>(coef, c.inv_cut, rsq, tp.cutsq, vxtmp - v[j].x, vytmp - v[j].y,
+                                 vztmp - v[j].z, delx, dely, delz, fx, fy, fz);
       fxtmp += fx;
       fytmp += fy;
       fztmp += fz;
@@ -400,5 +441,5 @@ void FixViscousRelative::unpack_reverse_comm(int n, int *list_, double *buf)
 double FixViscousRelative::memory_usage()
 {
   return (double) maxfd * 3 * sizeof(double) +
-      (double) (atom->ntypes + 1) * (atom->ntypes + 1) * sizeof(TypePair);
+      (double) (atom->ntypes + 1) * (atom->ntypes + 1) * (sizeof(TypePair) + sizeof(DampingCoeff));
 }

@@ -6,6 +6,7 @@
 #ifndef LMP_CLUSTERDYN_FIX_VISCOUS_RELATIVE_H
 #define LMP_CLUSTERDYN_FIX_VISCOUS_RELATIVE_H
 
+#include "damping_pass.h"
 #include "fix.h"
 #include "viscous_settings.h"
 
@@ -20,6 +21,7 @@ namespace ClusterDyn {
     void init() override;
     void init_list(int, class NeighList *) override;
     void setup(int) override;
+    void pre_force(int) override;
     void post_force(int) override;
     void post_integrate() override;
     void end_of_step() override;
@@ -34,11 +36,12 @@ namespace ClusterDyn {
     ViscousSettings opt;     // the fix's arguments
     struct TypePair {
       double cutsq;          // damping range, squared
-      double inv_cut;        // 1 / damping range (weight dpd)
-      double coef;           // m_ij G_ij / ftm2v for per-type masses
       double stiffness;      // C_ij from the pair style (J style)
     };
     TypePair *typepair;      // (ntypes+1)^2
+    DampingCoeff *coeff;     // (ntypes+1)^2: m_ij G_ij / ftm2v (per-type masses), 1 / range
+    DampingPass pass;        // the damping in the pair style's force pass (damping_pass.h)
+    int fused;               // this run: the pair style took the pass
     double **fd;             // damping force per atom (own and ghost), summed to owners
     int maxfd;
     double removed;          // energy removed by this proc's kicks
@@ -52,7 +55,9 @@ namespace ClusterDyn {
     Bonds current_bonds() const;
 
     void clear_fd();
+    int claim_pass();                    // at init: whether the pair style takes the pass
     double compute_forces(int vflag);    // returns the power sum of my atoms
+    double add_forces();                 // fd's ghost parts to owners, fd into f; the power
     template <int NORMAL, int DPD, int GENERAL, int LINKED> void damp(const Bonds &bonds);
     double rate(const TypePair &tp, double mij) const;    // G_ij (1/time)
     double friction(const TypePair &tp, double mi, double mj) const;    // m_ij G_ij / ftm2v

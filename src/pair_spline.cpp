@@ -24,7 +24,7 @@ using namespace ClusterDyn;
 template <class Law>
 PairSpline<Law>::PairSpline(LAMMPS *lmp) :
     Pair(lmp), table(lmp), state(lmp, this, std::string("Pair style ") + Law::style, 0),
-    kappa_any(0)
+    kappa_any(0), damping_fusion(1), damping(nullptr)
 {
   writedata = 1;
   born_matrix_enable = 1;
@@ -59,10 +59,12 @@ template <class Law> void PairSpline<Law>::compute(int eflag, int vflag)
   ev_init(eflag, vflag);
   const StatePass pass = start_compute();
   StateTally changes;
-  dispatch(eflag, [&](auto t, auto mode, auto ev, auto e, auto n) {
+  // fix viscous/relative's damping in this pass: offered, and no tallies this step
+  DampingPass *const fused = damping && damping->fd && !evflag ? damping : nullptr;
+  dispatch<true>(eflag, fused, [&](auto t, auto mode, auto ev, auto e, auto n, auto d) {
     spline_kernel<Law, decltype(t), decltype(mode)::value, decltype(ev)::value,
-                  decltype(e)::value, decltype(n)::value>(
-        kernel_data(), list, atom, force->special_lj, 0, list->inum, (xyz3 *) atom->f[0], pass,
+                  decltype(e)::value, decltype(n)::value, decltype(d)::value>(
+        kernel_data(fused), list, atom, force->special_lj, 0, list->inum, (xyz3 *) atom->f[0], pass,
         changes,
         [this](int i, int j, int nlocal, int newton, double evdwl, double fpair, double dx,
                double dy, double dz) {
@@ -70,6 +72,7 @@ template <class Law> void PairSpline<Law>::compute(int eflag, int vflag)
         },
         [this](int i, int j, double rsq) { singular_error(i, j, rsq); });
   });
+  if (fused) fused->filled = 1;
   if (vflag_fdotr) virial_fdotr_compute();
   finish_compute(changes);
 }
@@ -168,6 +171,7 @@ template <class Law> void PairSpline<Law>::init_style()
   if (tail_flag)
     error->all(FLERR, "Pair {}: pair_modify tail yes does not apply (the interaction ends at "
                "the tail's end)", Law::style);
+  damping = nullptr;    // claimed by fix viscous/relative's init, after this
   if (links.on()) {
     neighbor->add_request(this, NeighConst::REQ_HISTORY);
     state.init();
@@ -290,6 +294,8 @@ template <class Law> void *PairSpline<Law>::extract(const char *str, int &dim)
 {
   dim = 0;
   if (strcmp(str, "pair_state") == 0) return links.on() ? (void *) &state : nullptr;
+  if (strcmp(str, "damping_pass") == 0)    // the kernel's DAMP modes: every pair to the end
+    return damping_fusion && !links.on() && !setting.chain_n ? (void *) &damping : nullptr;
   dim = 2;
   return table.extract(str);
 }

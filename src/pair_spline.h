@@ -62,40 +62,53 @@ namespace ClusterDyn {
     SplineStepCheck step_check;
     std::vector<double> chain_scale;    // 1/n^2 for n = 0..N (0 for n = 0)
     int kappa_any;                      // some pair has kappa != 1: the general kernel
+    int damping_fusion;                 // this class's compute() runs fix viscous/relative's
+                                        // damping in its pass (damping_pass.h); not /omp
+    DampingPass *damping;               // the slot: the fix's pass, claimed at its init
 
     void allocate();
     void apply(const SplineSettings &s);
-    SplineKernelData kernel_data() const
+    SplineKernelData kernel_data(const DampingPass *fused = nullptr) const
     {
-      return {table.coeffs, links.coeff.data(), links.making(), setting.chain_n, chain_scale.data()};
+      return {table.coeffs, links.coeff.data(), links.making(), setting.chain_n,
+              chain_scale.data(), fused};
     }
     StatePass start_compute() { return links.on() ? state.begin() : StatePass(); }
     void finish_compute(const StateTally &changes);
     [[noreturn]] void singular_error(int i, int j, double rsq) const;
 
-    // calls run(tail policy, mode, evflag, eflag, newton_pair) with compile-time constants
-    template <class Run> void dispatch(int eflag, Run &&run) const;
+    // calls run(tail policy, mode, evflag, eflag, newton_pair, damp) with compile-time
+    // constants; damp 1 (FUSE builds only) where fuse is set and the step has no tallies
+    template <bool FUSE, class Run> void dispatch(int eflag, bool fuse, Run &&run) const;
   };
 
   template <class Law>
-  template <class Run>
-  void PairSpline<Law>::dispatch(int eflag, Run &&run) const
+  template <bool FUSE, class Run>
+  void PairSpline<Law>::dispatch(int eflag, bool fuse, Run &&run) const
   {
     auto with_flags = [&](auto t, auto k) {
       using I0 = std::integral_constant<int, 0>;
       using I1 = std::integral_constant<int, 1>;
+      constexpr int MODE = decltype(k)::value;
       if (evflag) {
         if (eflag) {
-          if (force->newton_pair) run(t, k, I1(), I1(), I1());
-          else run(t, k, I1(), I1(), I0());
+          if (force->newton_pair) run(t, k, I1(), I1(), I1(), I0());
+          else run(t, k, I1(), I1(), I0(), I0());
         } else {
-          if (force->newton_pair) run(t, k, I1(), I0(), I1());
-          else run(t, k, I1(), I0(), I0());
+          if (force->newton_pair) run(t, k, I1(), I0(), I1(), I0());
+          else run(t, k, I1(), I0(), I0(), I0());
         }
-      } else {
-        if (force->newton_pair) run(t, k, I0(), I0(), I1());
-        else run(t, k, I0(), I0(), I0());
+        return;
       }
+      if constexpr (FUSE && (MODE == SplineMode::PLAIN || MODE == SplineMode::KAPPA)) {
+        if (fuse) {
+          if (force->newton_pair) run(t, k, I0(), I0(), I1(), I1());
+          else run(t, k, I0(), I0(), I0(), I1());
+          return;
+        }
+      }
+      if (force->newton_pair) run(t, k, I0(), I0(), I1(), I0());
+      else run(t, k, I0(), I0(), I0(), I0());
     };
     using M = SplineMode;
     with_tail(setting.tail, [&](auto t) {

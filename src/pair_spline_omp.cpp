@@ -23,6 +23,7 @@ PairSplineOMP<Law>::PairSplineOMP(LAMMPS *lmp) : PairSpline<Law>(lmp), ThrOMP(lm
 {
   this->suffix_flag |= Suffix::OMP;
   this->respa_enable = 0;
+  this->damping_fusion = 0;    // per-thread forces: the fix sums its damping itself
 }
 
 template <class Law> void PairSplineOMP<Law>::compute(int eflag, int vflag)
@@ -46,9 +47,10 @@ template <class Law> void PairSplineOMP<Law>::compute(int eflag, int vflag)
     ev_setup_thr(eflag, vflag, nall, this->eatom, this->vatom, nullptr, thr);
     StateTally mine;
     try {
-      this->dispatch(eflag, [&](auto t, auto mode, auto ev, auto e, auto n) {
+      this->template dispatch<false>(eflag, false, [&](auto t, auto mode, auto ev, auto e, auto n,
+                                                       auto d) {
         spline_kernel<Law, decltype(t), decltype(mode)::value, decltype(ev)::value,
-                      decltype(e)::value, decltype(n)::value>(
+                      decltype(e)::value, decltype(n)::value, decltype(d)::value>(
             this->kernel_data(), this->list, this->atom, this->force->special_lj, ifrom, ito,
             (xyz3 *) thr->get_f()[0], pass, mine,
             [&](int i, int j, int nlocal, int newton, double evdwl, double fpair, double dx,

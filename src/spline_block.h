@@ -18,6 +18,7 @@
 #ifndef LMP_CLUSTERDYN_SPLINE_BLOCK_H
 #define LMP_CLUSTERDYN_SPLINE_BLOCK_H
 
+#include "damping_pass.h"
 #include "spline_tails.h"
 #include "vector_math.h"
 #include "xyz3.h"
@@ -42,6 +43,10 @@ namespace ClusterDyn {
     // written by compute()
     alignas(64) double fpair[SIZE];   // f(r)/r of the law with its tail (0 outside its end)
     alignas(64) double e[SIZE];       // its energy, shifted (0 outside)
+    // fix viscous/relative's damping in the pass (damping_pass.h): v_i - v_j, filled by the
+    // kernel, and the damping force on i, written by damp()
+    alignas(64) double dvx[SIZE], dvy[SIZE], dvz[SIZE];
+    alignas(64) double dfx[SIZE], dfy[SIZE], dfz[SIZE];
 
     // the vector stage: the law with its tail at every rsq; UNIFORM: every pair has the
     // coefficients c0 (one atom type), else those of tp.  Pairs beyond the interaction end
@@ -72,6 +77,44 @@ namespace ClusterDyn {
         const double en = TailT::template eval<KAPPA, Law>(c, r2, fp);
         fpair[k] = fp * inside;
         e[k] = (en - c.offset) * inside;
+      }
+    }
+
+    // the damping forces of the block's pairs (all inside the interaction end), padded as
+    // compute() pads
+    template <bool NORMAL, bool DPD, bool UNIFORM>
+    __attribute__((noinline)) void damp(const DampingCoeff *_noalias dcoeffs,
+                                        const SplineCoeff *_noalias coeffs, int ntp1)
+    {
+      for (int k = n; k < SIZE; k++) {
+        delx[k] = delx[0];
+        dely[k] = dely[0];
+        delz[k] = delz[0];
+        dvx[k] = dvx[0];
+        dvy[k] = dvy[0];
+        dvz[k] = dvz[0];
+      }
+      const DampingCoeff &d0 = dcoeffs[ntp1 + 1];
+      const double cutsq0 = coeffs[ntp1 + 1].cutsq;
+#pragma omp simd
+      for (int k = 0; k < SIZE; k++) {
+        const DampingCoeff &d = UNIFORM ? d0 : dcoeffs[tp[k]];
+        damping_force<NORMAL, DPD>(d.coef, d.inv_cut, rsq[k], UNIFORM ? cutsq0 : coeffs[tp[k]].cutsq,
+                                   dvx[k], dvy[k], dvz[k], delx[k], dely[k], delz[k], dfx[k],
+                                   dfy[k], dfz[k]);
+      }
+    }
+
+    // damp() with the pass's mode and weight
+    template <bool UNIFORM>
+    void damp(const DampingPass &pass, const SplineCoeff *coeffs, int ntp1)
+    {
+      if (pass.normal) {
+        if (pass.dpd) damp<true, true, UNIFORM>(pass.coeff, coeffs, ntp1);
+        else damp<true, false, UNIFORM>(pass.coeff, coeffs, ntp1);
+      } else {
+        if (pass.dpd) damp<false, true, UNIFORM>(pass.coeff, coeffs, ntp1);
+        else damp<false, false, UNIFORM>(pass.coeff, coeffs, ntp1);
       }
     }
   };

@@ -9,6 +9,7 @@
 #ifndef LMP_CLUSTERDYN_SPLINE_KERNEL_H
 #define LMP_CLUSTERDYN_SPLINE_KERNEL_H
 
+#include "damping_pass.h"
 #include "pair_state.h"
 #include "spline_block.h"
 #include "spline_links.h"
@@ -41,15 +42,18 @@ namespace ClusterDyn {
     Making making;                    // link modes: how unlinked pairs link during a run
     int chain_n;
     const double *chain_scale;        // 1/n^2
+    const DampingPass *damping;       // DAMP: fix viscous/relative's forces into damping->fd
   };
 
   // the pairs of list entries iifrom..iito-1: forces into f, energy and virial through
   // tally(i, j, nlocal, newton, evdwl, fpair, dx, dy, dz), state changes into changes;
   // singular(i, j, rsq) stops at a pair inside the law's singular distance.
+  // DAMP (PLAIN and KAPPA modes): also fix viscous/relative's damping forces of the same pairs
+  // into k.damping->fd, in list order as the fix's own loop sums them (damping_pass.h).
   // Blocks of pairs (spline_block.h): the vector stage computes separations and the law with
   // its tail; this loop then applies the link rule and scatters in list order.
-  template <class Law, class TailT, int MODE, int EVFLAG, int EFLAG, int NEWTON_PAIR, class Tally,
-            class Singular>
+  template <class Law, class TailT, int MODE, int EVFLAG, int EFLAG, int NEWTON_PAIR, int DAMP,
+            class Tally, class Singular>
   void spline_kernel(const SplineKernelData &k, const NeighList *list, const Atom *atom,
                      const double *special_lj, int iifrom, int iito, xyz3 *f,
                      const StatePass &pass, StateTally &changes, Tally &&tally,
@@ -58,6 +62,8 @@ namespace ClusterDyn {
     constexpr bool LINKED = SplineMode::link(MODE);
     constexpr bool KAPPA_ON = SplineMode::kappa(MODE);
     constexpr bool CHAIN = MODE == SplineMode::CHAIN;
+    static_assert(!DAMP || MODE == SplineMode::PLAIN || MODE == SplineMode::KAPPA,
+                  "the damping pass covers every pair inside the interaction end");
     const tagint *_noalias const tag = atom->tag;
     const auto *_noalias const x = (xyz3 *) atom->x[0];
     const int *_noalias const type = atom->type;
@@ -73,11 +79,14 @@ namespace ClusterDyn {
     int *const *const words = pass.words;
     const tagint *const fresh = pass.fresh;
     const int trial = pass.trial;
+    const auto *_noalias const v = (const xyz3 *) atom->v[0];
+    xyz3 *const fd = DAMP ? k.damping->fd : nullptr;
     SplineBlock b;
 
     // f[i] is summed over i's pairs first, across blocks, as a scalar loop would
     int icur = -1;
     double fxtmp = 0.0, fytmp = 0.0, fztmp = 0.0;
+    double dxtmp = 0.0, dytmp = 0.0, dztmp = 0.0;    // DAMP: the damping force on icur
     int ii = iifrom, jjnext = 0;
     while (ii < iito) {
       // fill: list entries from (ii, jjnext) on, with their separations; without link state
@@ -86,6 +95,7 @@ namespace ClusterDyn {
       while (ii < iito && b.n < SplineBlock::SIZE) {
         const int i = ilist[ii];
         const double xtmp = x[i].x, ytmp = x[i].y, ztmp = x[i].z;
+        const xyz3 vi = DAMP ? v[i] : xyz3{0.0, 0.0, 0.0};
         const int tpi = type[i] * ntp1;
         const int *_noalias const jlist = firstneigh[i];
         const int jnum = numneigh[i];
@@ -116,6 +126,11 @@ namespace ClusterDyn {
           b.delz[m] = delz;
           b.rsq[m] = rsq;
           if (CHAIN) b.scale[m] = scale;
+          if (DAMP) {
+            b.dvx[m] = vi.x - v[j].x;
+            b.dvy[m] = vi.y - v[j].y;
+            b.dvz[m] = vi.z - v[j].z;
+          }
         }
         if (jj == jnum) {
           ii++;
@@ -126,6 +141,10 @@ namespace ClusterDyn {
       if (b.n == 0) break;
       if (uniform) b.compute<Law, TailT, KAPPA_ON, true>(coeffs, ntp1);
       else b.compute<Law, TailT, KAPPA_ON, false>(coeffs, ntp1);
+      if constexpr (DAMP > 0) {
+        if (uniform) b.damp<true>(*k.damping, coeffs, ntp1);
+        else b.damp<false>(*k.damping, coeffs, ntp1);
+      }
 
       // scatter, in list order: the link rule, special factors, forces, tallies
       for (int p = 0; p < b.n; p++) {
@@ -136,11 +155,27 @@ namespace ClusterDyn {
             f[icur].x += fxtmp;
             f[icur].y += fytmp;
             f[icur].z += fztmp;
+            if (DAMP) {
+              fd[icur].x += dxtmp;
+              fd[icur].y += dytmp;
+              fd[icur].z += dztmp;
+            }
           }
           icur = i;
           fxtmp = fytmp = fztmp = 0.0;
+          dxtmp = dytmp = dztmp = 0.0;
         }
         const double rsq = b.rsq[p];
+        if (DAMP) {
+          dxtmp += b.dfx[p];
+          dytmp += b.dfy[p];
+          dztmp += b.dfz[p];
+          if (NEWTON_PAIR || j < nlocal) {
+            fd[j].x -= b.dfx[p];
+            fd[j].y -= b.dfy[p];
+            fd[j].z -= b.dfz[p];
+          }
+        }
         double e = b.e[p], fpair = b.fpair[p];
         if constexpr (LINKED) {
           const SplineCoeff &c = coeffs[b.tp[p]];
@@ -180,6 +215,11 @@ namespace ClusterDyn {
       f[icur].x += fxtmp;
       f[icur].y += fytmp;
       f[icur].z += fztmp;
+      if (DAMP) {
+        fd[icur].x += dxtmp;
+        fd[icur].y += dytmp;
+        fd[icur].z += dztmp;
+      }
     }
   }
 

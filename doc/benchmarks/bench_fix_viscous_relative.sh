@@ -1,22 +1,30 @@
 #!/usr/bin/env bash
 # Cost of fix viscous/relative on the 32,000-cluster fcc block (in.bench_pair): LAMMPS's
-# Pair and Modify times with and without the fix, best of $reps runs; markdown table.
-#   source build/env.sh; bash doc/benchmarks/bench_fix_viscous_relative.sh [steps] [reps]
+# loop, Pair, Modify and Comm times with and without the fix, the run with the smallest loop
+# time of $reps, the configurations interleaved (this machine's speed drifts); markdown table.
+#   source build/env.sh; bash doc/benchmarks/bench_fix_viscous_relative.sh [steps] [reps] [suffix]
 set -euo pipefail
 cd "$(dirname "$0")"
 steps=${1:-1000}
-reps=${2:-3}
-times() {  # damp args: prints "pair modify" of the run with the smallest total
-  for _ in $(seq "$reps"); do
-    OMP_NUM_THREADS=1 lmp -in in.bench_pair -log none -nocite -var steps "$steps" \
-      -var pair "morse/spline cut 1.2" -var coeff "2.46e-6 3.76e5 1.0e-5" \
-      -var dampon "$([ "$1" = none ] && echo 0 || echo 1)" -var damp "$1" |
-      awk '/^Pair *\|/ {p=$3} /^Modify *\|/ {m=$3} END {print p+m, p, m}'
-  done | sort -g | head -1 | cut -d' ' -f2-
-}
-echo "| run ($steps steps, 32000 clusters, morse/spline cut 1.2) | Pair (s) | Modify (s) |"
-echo "|---|---|---|"
-for damp in none "J 50" "J 50 mode normal" "J 50 mode normal weight dpd"; do
-  read -r pair modify <<<"$(times "$damp")"
-  echo "| fix viscous/relative: $damp | $pair | $modify |"
+reps=${2:-5}
+suffix=${3:-}
+configs=(none "J 50" "J 50 mode normal" "J 50 mode normal weight dpd")
+out=$(mktemp -d)
+trap 'rm -rf "$out"' EXIT
+for r in $(seq "$reps"); do
+  for k in "${!configs[@]}"; do
+    damp=${configs[$k]}
+    OMP_NUM_THREADS=1 lmp -in in.bench_pair -log none -nocite ${suffix:+-sf $suffix} \
+      -var steps "$steps" -var pair "morse/spline cut 1.2" -var coeff "2.46e-6 3.76e5 1.0e-5" \
+      -var dampon "$([ "$damp" = none ] && echo 0 || echo 1)" -var damp "$damp" |
+      awk '/^Loop time/ {l=$4} /^Pair *\|/ {p=$3} /^Modify *\|/ {m=$3} /^Comm *\|/ {c=$3}
+           END {print l, p, m, c}' >>"$out/$k"
+  done
+done
+echo "| run ($steps steps, 32000 clusters, morse/spline cut 1.2${suffix:+, -sf $suffix}) | loop (s) | Pair (s) | Modify (s) | Comm (s) | loop / no fix |"
+echo "|---|---|---|---|---|---|"
+base=$(sort -g "$out/0" | head -1 | cut -d' ' -f1)
+for k in "${!configs[@]}"; do
+  read -r loop pair modify comm <<<"$(sort -g "$out/$k" | head -1)"
+  echo "| fix viscous/relative: ${configs[$k]} | $loop | $pair | $modify | $comm | $(awk -v a="$loop" -v b="$base" 'BEGIN {printf "%.2f", a / b}') |"
 done

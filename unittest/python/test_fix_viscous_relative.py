@@ -324,3 +324,100 @@ def test_only_pairs_inside_the_group_are_damped():
     assert np.any(inside) and np.any(~inside)
     assert np.all(f[~inside] == 0.0) and np.max(np.abs(f[inside])) > 0
     assert np.max(np.abs(f[inside].sum(axis=0))) <= 1e-12 * np.max(np.abs(f))
+
+
+# --- the damping summed in the spline pair style's force pass (damping_pass.h) ---------------
+
+FUSED = "damping summed in pair"
+
+
+def damped_run(lmp, log, fix, thermo, steps=200, units="lj", ntypes=2, newton="on",
+               pair="morse/spline cut 1.3", suffix=None):
+    """A hot damped block; thermo 1 asks for the energy on every step, so the pair style never
+    takes the damping into its pass (steps with tallies), thermo `steps` leaves it every step
+    but the first and last.  Returns positions, velocities (by atom ID) and the energy removed."""
+    lmp.command(f"log {log}")
+    if suffix:
+        lmp.commands_list([f"suffix {suffix}", "package omp 2"])
+    if units == "lj":
+        fcc_block(lmp, noise=0.05, temp=0.3, ntypes=ntypes)
+        coeff, dt = "1.0 6.0 1.0", 0.002
+    else:  # the aluminium clusters of the 3D examples, 10 um
+        a = 1.0e-5
+        lmp.commands_list([
+            "units si", "atom_modify map array", f"lattice fcc {a * math.sqrt(2)!r}",
+            "region box block 0 4 0 4 0 4", f"create_box {ntypes} box", "create_atoms 1 box",
+            "mass * 2.338e-12", "reset_atoms id sort yes",
+            f"displace_atoms all random {0.05 * a} {0.05 * a} {0.05 * a} 4711 units box",
+            "velocity all create 1e16 4712 loop geom", f"neighbor {0.3 * a} bin"])
+        if ntypes == 2:
+            lmp.commands_list(["set type 1 type/fraction 2 0.5 4713", "mass 2 4.676e-12"])
+        coeff, dt = "2.46e-6 3.76e5 1.0e-5", 2e-10
+    lmp.commands_list([f"newton {newton} on", f"pair_style {pair}", f"pair_coeff * * {coeff}",
+                       "pair_modify shift yes", f"timestep {dt}", "fix nve all nve", fix,
+                       f"thermo {thermo}", "thermo_style custom step pe ke f_damp",
+                       f"run {steps} post no"])
+    removed = lmp.extract_fix("damp", 0, 0)
+    lmp.command("log none")
+    ids = np.array(lmp.gather_atoms("id", 0, 1))
+    order = np.argsort(ids)
+    return arrays(lmp, "x")[order], arrays(lmp, "v")[order], removed
+
+
+@pytest.mark.parametrize("units,ntypes,newton", [("lj", 1, "on"), ("lj", 2, "on"),
+                                                 ("lj", 2, "off"), ("si", 2, "on")])
+@pytest.mark.parametrize("options", ["gamma 2.0", "gamma 2.0 mode normal",
+                                     "J 20 mode normal weight dpd", "J 20 weight dpd"])
+def test_damping_in_the_pair_pass_equals_the_fix_loop(tmp_path, units, ntypes, newton, options):
+    if units == "si":
+        options = options.replace("gamma 2.0", "gamma 1e8")
+    runs = {}
+    for thermo in (1, 200):  # every step by the fix's own loop; all but two in the pair's pass
+        log = tmp_path / f"log.{thermo}"
+        with session() as lmp:
+            runs[thermo] = damped_run(lmp, log, f"fix damp all viscous/relative {options}", thermo,
+                                      units=units, ntypes=ntypes, newton=newton)
+        assert FUSED in log.read_text()
+    (x1, v1, e1), (x2, v2, e2) = runs[1], runs[200]
+    assert e1 > 0
+    assert e2 == pytest.approx(e1, rel=1e-10)
+    assert np.max(np.abs(v2 - v1)) <= 1e-10 * np.max(np.abs(v1))
+    assert np.max(np.abs(x2 - x1)) <= 1e-10 * np.max(np.abs(x1))
+
+
+@pytest.mark.parametrize("case,fixes,pair,suffix,claims", [
+    ("pairs of the pair style", ["all viscous/relative J 20"], "morse/spline cut 1.3", None, 1),
+    ("kappa", ["all viscous/relative J 20"], "morse/spline cut 1.3", None, 1),
+    ("two fixes: the first", ["all viscous/relative J 20", "all viscous/relative gamma 1.0"],
+     "morse/spline cut 1.3", None, 1),
+    ("a group", ["half viscous/relative J 20"], "morse/spline cut 1.3", None, 0),
+    ("cutoff keyword", ["all viscous/relative gamma 1.0 cutoff 1.2"], "morse/spline cut 1.3",
+     None, 0),
+    ("link L", ["all viscous/relative J 20"], "morse/spline cut 1.3 link 1.2", None, 0),
+    ("chain N", ["all viscous/relative J 20"], "morse/spline cut 1.3 chain 2", None, 0),
+    ("/omp", ["all viscous/relative J 20"], "morse/spline cut 1.3", "omp", 0),
+    ("hybrid", ["all viscous/relative gamma 1.0"], "hybrid/overlay morse/spline cut 1.3 zero 1.3",
+     None, 0),
+])
+def test_the_pair_pass_takes_the_damping_only_where_its_pairs_are_the_fixs(tmp_path, case, fixes,
+                                                                          pair, suffix, claims):
+    log = tmp_path / "log.claim"
+    with session() as lmp:
+        lmp.command(f"log {log}")
+        if suffix:
+            lmp.commands_list([f"suffix {suffix}", "package omp 1"])
+        fcc_block(lmp, noise=0.05, temp=0.3)
+        coeff = "* * morse/spline 1.0 6.0 1.0\npair_coeff * * zero" if "hybrid" in pair else \
+            "* * 1.0 6.0 1.0" + (" kappa 1.05" if case == "kappa" else "")
+        lmp.commands_list(["region half block 0 2 INF INF INF INF", "group half region half",
+                           f"pair_style {pair}", *[f"pair_coeff {c}" for c in coeff.split("\npair_coeff ")],
+                           "timestep 0.002", "fix nve all nve",
+                           *[f"fix damp{k} {f}" for k, f in enumerate(fixes)],
+                           "run 20 post no"])
+        lmp.command("log none")
+        removed = [lmp.extract_fix(f"damp{k}", 0, 0) for k in range(len(fixes))]
+    text = log.read_text()
+    assert text.count(FUSED) == claims, case
+    if claims:
+        assert "Fix viscous/relative damp0: damping summed in pair morse/spline's force pass" in text
+    assert all(e > 0 for e in removed)
