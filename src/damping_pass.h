@@ -13,8 +13,8 @@
      - fix pre_force: fd zeroed and offered, unless the fix tallies its
        virial on this step;
      - pair compute: on steps without energy or virial, the kernel adds the
-       damping forces into fd in list order (so fd is bit for bit the fix's
-       own loop) and marks the pass filled;
+       damping forces into fd in list order, as the fix's own loop does (the
+       /omp styles: per thread, damping_threads.h), and marks the pass filled;
      - fix post_force: its own loop only if the pass was not filled, then
        the ghost parts to their owners and fd into f as before.
 ------------------------------------------------------------------------- */

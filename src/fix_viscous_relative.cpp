@@ -69,6 +69,12 @@ FixViscousRelative::FixViscousRelative(LAMMPS *lmp, int narg, char **arg) :
 
 FixViscousRelative::~FixViscousRelative()
 {
+  // unfix followed by run ... pre no: the pair style must not keep the pass
+  if (fused && force && force->pair) {
+    int dim = 0;
+    auto slot = (DampingPass **) force->pair->extract("damping_pass", dim);
+    if (slot && *slot == &pass) *slot = nullptr;
+  }
   delete[] typepair;
   delete[] coeff;
   memory->destroy(fd);

@@ -24,7 +24,7 @@ using namespace ClusterDyn;
 template <class Law>
 PairSpline<Law>::PairSpline(LAMMPS *lmp) :
     Pair(lmp), table(lmp), state(lmp, this, std::string("Pair style ") + Law::style, 0),
-    kappa_any(0), damping_fusion(1), damping(nullptr)
+    kappa_any(0), damping(nullptr)
 {
   writedata = 1;
   born_matrix_enable = 1;
@@ -61,7 +61,7 @@ template <class Law> void PairSpline<Law>::compute(int eflag, int vflag)
   StateTally changes;
   // fix viscous/relative's damping in this pass: offered, and no tallies this step
   DampingPass *const fused = damping && damping->fd && !evflag ? damping : nullptr;
-  dispatch<true>(eflag, fused, [&](auto t, auto mode, auto ev, auto e, auto n, auto d) {
+  dispatch(eflag, fused, [&](auto t, auto mode, auto ev, auto e, auto n, auto d) {
     spline_kernel<Law, decltype(t), decltype(mode)::value, decltype(ev)::value,
                   decltype(e)::value, decltype(n)::value, decltype(d)::value>(
         kernel_data(fused), list, atom, force->special_lj, 0, list->inum, (xyz3 *) atom->f[0], pass,
@@ -295,7 +295,7 @@ template <class Law> void *PairSpline<Law>::extract(const char *str, int &dim)
   dim = 0;
   if (strcmp(str, "pair_state") == 0) return links.on() ? (void *) &state : nullptr;
   if (strcmp(str, "damping_pass") == 0)    // the kernel's DAMP modes: every pair to the end
-    return damping_fusion && !links.on() && !setting.chain_n ? (void *) &damping : nullptr;
+    return !links.on() && !setting.chain_n ? (void *) &damping : nullptr;
   dim = 2;
   return table.extract(str);
 }

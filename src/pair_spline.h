@@ -62,9 +62,8 @@ namespace ClusterDyn {
     SplineStepCheck step_check;
     std::vector<double> chain_scale;    // 1/n^2 for n = 0..N (0 for n = 0)
     int kappa_any;                      // some pair has kappa != 1: the general kernel
-    int damping_fusion;                 // this class's compute() runs fix viscous/relative's
-                                        // damping in its pass (damping_pass.h); not /omp
-    DampingPass *damping;               // the slot: the fix's pass, claimed at its init
+    DampingPass *damping;               // the slot: fix viscous/relative's pass
+                                        // (damping_pass.h), claimed at its init
 
     void allocate();
     void apply(const SplineSettings &s);
@@ -78,12 +77,12 @@ namespace ClusterDyn {
     [[noreturn]] void singular_error(int i, int j, double rsq) const;
 
     // calls run(tail policy, mode, evflag, eflag, newton_pair, damp) with compile-time
-    // constants; damp 1 (FUSE builds only) where fuse is set and the step has no tallies
-    template <bool FUSE, class Run> void dispatch(int eflag, bool fuse, Run &&run) const;
+    // constants; damp 1 (PLAIN and KAPPA modes) where fuse is set: a step without tallies
+    template <class Run> void dispatch(int eflag, bool fuse, Run &&run) const;
   };
 
   template <class Law>
-  template <bool FUSE, class Run>
+  template <class Run>
   void PairSpline<Law>::dispatch(int eflag, bool fuse, Run &&run) const
   {
     auto with_flags = [&](auto t, auto k) {
@@ -100,7 +99,7 @@ namespace ClusterDyn {
         }
         return;
       }
-      if constexpr (FUSE && (MODE == SplineMode::PLAIN || MODE == SplineMode::KAPPA)) {
+      if constexpr (MODE == SplineMode::PLAIN || MODE == SplineMode::KAPPA) {
         if (fuse) {
           if (force->newton_pair) run(t, k, I0(), I0(), I1(), I1());
           else run(t, k, I0(), I0(), I0(), I1());

@@ -23,7 +23,6 @@ PairSplineOMP<Law>::PairSplineOMP(LAMMPS *lmp) : PairSpline<Law>(lmp), ThrOMP(lm
 {
   this->suffix_flag |= Suffix::OMP;
   this->respa_enable = 0;
-  this->damping_fusion = 0;    // per-thread forces: the fix sums its damping itself
 }
 
 template <class Law> void PairSplineOMP<Law>::compute(int eflag, int vflag)
@@ -35,9 +34,13 @@ template <class Law> void PairSplineOMP<Law>::compute(int eflag, int vflag)
   const StatePass pass = this->start_compute();
   std::exception_ptr failure;    // an error of a thread, raised after the parallel region
   StateTally changes;
+  // fix viscous/relative's damping in this pass: offered, and no tallies this step
+  DampingPass *const fused =
+      this->damping && this->damping->fd && !this->evflag ? this->damping : nullptr;
+  if (fused) damping_threads.reserve(nthreads, nall);
 
 #if defined(_OPENMP)
-#pragma omp parallel LMP_DEFAULT_NONE LMP_SHARED(eflag, vflag, failure, changes, pass)
+#pragma omp parallel LMP_DEFAULT_NONE LMP_SHARED(eflag, vflag, failure, changes, pass, fused)
 #endif
   {
     int ifrom, ito, tid;
@@ -46,12 +49,13 @@ template <class Law> void PairSplineOMP<Law>::compute(int eflag, int vflag)
     thr->timer(Timer::START);
     ev_setup_thr(eflag, vflag, nall, this->eatom, this->vatom, nullptr, thr);
     StateTally mine;
+    const DampingPass damping_mine = fused ? damping_threads.pass_of(*fused, tid) : DampingPass();
     try {
-      this->template dispatch<false>(eflag, false, [&](auto t, auto mode, auto ev, auto e, auto n,
-                                                       auto d) {
+      this->dispatch(eflag, fused, [&](auto t, auto mode, auto ev, auto e, auto n,
+                                                      auto d) {
         spline_kernel<Law, decltype(t), decltype(mode)::value, decltype(ev)::value,
                       decltype(e)::value, decltype(n)::value, decltype(d)::value>(
-            this->kernel_data(), this->list, this->atom, this->force->special_lj, ifrom, ito,
+            this->kernel_data(fused ? &damping_mine : nullptr), this->list, this->atom, this->force->special_lj, ifrom, ito,
             (xyz3 *) thr->get_f()[0], pass, mine,
             [&](int i, int j, int nlocal, int newton, double evdwl, double fpair, double dx,
                 double dy, double dz) {
@@ -69,16 +73,21 @@ template <class Law> void PairSplineOMP<Law>::compute(int eflag, int vflag)
 #pragma omp critical(clusterdyn_pair_spline_links)
 #endif
     changes.add(mine);
+    if (fused && nthreads > 1) {
+      sync_threads();
+      damping_threads.reduce(fused->fd, tid, nthreads);
+    }
     thr->timer(Timer::PAIR);
     reduce_thr(this, eflag, vflag, thr);
   }
   if (failure) std::rethrow_exception(failure);
+  if (fused) fused->filled = 1;
   this->finish_compute(changes);
 }
 
 template <class Law> double PairSplineOMP<Law>::memory_usage()
 {
-  return memory_usage_thr() + PairSpline<Law>::memory_usage();
+  return memory_usage_thr() + PairSpline<Law>::memory_usage() + damping_threads.memory_usage();
 }
 
 namespace LAMMPS_NS {

@@ -6,6 +6,7 @@
 #ifndef LMP_CLUSTERDYN_PAIR_SPLINE_OMP_H
 #define LMP_CLUSTERDYN_PAIR_SPLINE_OMP_H
 
+#include "damping_threads.h"
 #include "pair_spline.h"
 #include "thr_omp.h"
 
@@ -19,6 +20,8 @@ namespace ClusterDyn {
     void compute(int, int) override;
     double memory_usage() override;
 
+   private:
+    DampingThreads damping_threads;    // fix viscous/relative's damping, per thread
   };
 
 }    // namespace ClusterDyn

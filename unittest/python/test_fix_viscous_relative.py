@@ -364,11 +364,14 @@ def damped_run(lmp, log, fix, thermo, steps=200, units="lj", ntypes=2, newton="o
     return arrays(lmp, "x")[order], arrays(lmp, "v")[order], removed
 
 
-@pytest.mark.parametrize("units,ntypes,newton", [("lj", 1, "on"), ("lj", 2, "on"),
-                                                 ("lj", 2, "off"), ("si", 2, "on")])
+@pytest.mark.parametrize("units,ntypes,newton,suffix", [
+    ("lj", 1, "on", None), ("lj", 2, "on", None), ("lj", 2, "off", None), ("si", 2, "on", None),
+    ("lj", 2, "on", "omp"), ("lj", 2, "off", "omp"), ("si", 1, "on", "omp")])
 @pytest.mark.parametrize("options", ["gamma 2.0", "gamma 2.0 mode normal",
                                      "J 20 mode normal weight dpd", "J 20 weight dpd"])
-def test_damping_in_the_pair_pass_equals_the_fix_loop(tmp_path, units, ntypes, newton, options):
+def test_damping_in_the_pair_pass_equals_the_fix_loop(tmp_path, units, ntypes, newton, suffix,
+                                                      options):
+    """/omp with 2 threads: thread 0 into fd, thread 1 into its block, summed after."""
     if units == "si":
         options = options.replace("gamma 2.0", "gamma 1e8")
     runs = {}
@@ -376,7 +379,7 @@ def test_damping_in_the_pair_pass_equals_the_fix_loop(tmp_path, units, ntypes, n
         log = tmp_path / f"log.{thermo}"
         with session() as lmp:
             runs[thermo] = damped_run(lmp, log, f"fix damp all viscous/relative {options}", thermo,
-                                      units=units, ntypes=ntypes, newton=newton)
+                                      units=units, ntypes=ntypes, newton=newton, suffix=suffix)
         assert FUSED in log.read_text()
     (x1, v1, e1), (x2, v2, e2) = runs[1], runs[200]
     assert e1 > 0
@@ -395,7 +398,7 @@ def test_damping_in_the_pair_pass_equals_the_fix_loop(tmp_path, units, ntypes, n
      None, 0),
     ("link L", ["all viscous/relative J 20"], "morse/spline cut 1.3 link 1.2", None, 0),
     ("chain N", ["all viscous/relative J 20"], "morse/spline cut 1.3 chain 2", None, 0),
-    ("/omp", ["all viscous/relative J 20"], "morse/spline cut 1.3", "omp", 0),
+    ("/omp", ["all viscous/relative J 20"], "morse/spline cut 1.3", "omp", 1),
     ("hybrid", ["all viscous/relative gamma 1.0"], "hybrid/overlay morse/spline cut 1.3 zero 1.3",
      None, 0),
 ])
@@ -419,5 +422,31 @@ def test_the_pair_pass_takes_the_damping_only_where_its_pairs_are_the_fixs(tmp_p
     text = log.read_text()
     assert text.count(FUSED) == claims, case
     if claims:
-        assert "Fix viscous/relative damp0: damping summed in pair morse/spline's force pass" in text
+        style = "morse/spline/omp" if suffix else "morse/spline"
+        assert f"Fix viscous/relative damp0: damping summed in pair {style}'s force pass" in text
     assert all(e > 0 for e in removed)
+
+
+def test_the_pass_follows_unfix_and_a_new_pair_style(tmp_path):
+    """The pair style's slot is cleared at each init and by the fix's deletion: after unfix, a
+    run is undamped (its energy conserved as plain NVE's); a new pair style is claimed anew."""
+    log = tmp_path / "log.sequence"
+    with session() as lmp:
+        lmp.command(f"log {log}")
+        fcc_block(lmp, noise=0.05, temp=0.3)
+        lmp.commands_list(["pair_style morse/spline cut 1.3", "pair_coeff * * 1.0 6.0 1.0",
+                           "pair_modify shift yes", "timestep 0.002", "fix nve all nve",
+                           "thermo_style custom step etotal", "fix damp all viscous/relative J 5",
+                           "run 100 post no", "unfix damp", "run 0 post no"])
+        e0 = lmp.get_thermo("etotal")
+        lmp.command("run 200 post no")
+        undamped_drift = abs(lmp.get_thermo("etotal") - e0) / abs(e0)
+        lmp.commands_list(["pair_style lj/spline cut 1.3", "pair_coeff * * 1.0 1.0",
+                           "fix damp2 all viscous/relative J 5", "run 100 post no"])
+        removed = lmp.extract_fix("damp2", 0, 0)
+        lmp.command("log none")
+    text = log.read_text()
+    assert undamped_drift < 1e-4
+    assert removed > 0
+    assert "damp: damping summed in pair morse/spline's" in text
+    assert "damp2: damping summed in pair lj/spline's" in text
