@@ -64,6 +64,19 @@ namespace ClusterDyn {
     const DampingCoeff *coeff = nullptr;     // per type pair, (ntypes+1)^2
     xyz3 *fd = nullptr;                      // offered this step: zeroed, own and ghost atoms
     int filled = 0;                          // the pair style added the damping into fd
+
+    // damping_force() with this pass's mode and weight, one pair at a time
+    void force(const DampingCoeff &c, double cutsq, double rsq, double dvx, double dvy,
+               double dvz, double delx, double dely, double delz, xyz3 &df) const
+    {
+      if (normal) {
+        if (dpd) damping_force<true, true>(c.coef, c.inv_cut, rsq, cutsq, dvx, dvy, dvz, delx, dely, delz, df.x, df.y, df.z);
+        else damping_force<true, false>(c.coef, c.inv_cut, rsq, cutsq, dvx, dvy, dvz, delx, dely, delz, df.x, df.y, df.z);
+      } else {
+        if (dpd) damping_force<false, true>(c.coef, c.inv_cut, rsq, cutsq, dvx, dvy, dvz, delx, dely, delz, df.x, df.y, df.z);
+        else damping_force<false, false>(c.coef, c.inv_cut, rsq, cutsq, dvx, dvy, dvz, delx, dely, delz, df.x, df.y, df.z);
+      }
+    }
   };
 
 }    // namespace ClusterDyn

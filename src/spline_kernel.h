@@ -62,6 +62,8 @@ namespace ClusterDyn {
     constexpr bool LINKED = SplineMode::link(MODE);
     constexpr bool KAPPA_ON = SplineMode::kappa(MODE);
     constexpr bool CHAIN = MODE == SplineMode::CHAIN;
+    // the law in the block's SIMD loop: a transcendental function, or kappa's root and quotient
+    constexpr bool BLOCK = Law::vector_stage || KAPPA_ON;
     static_assert(!DAMP || MODE == SplineMode::PLAIN || MODE == SplineMode::KAPPA,
                   "the damping pass covers every pair inside the interaction end");
     const tagint *_noalias const tag = atom->tag;
@@ -87,6 +89,74 @@ namespace ClusterDyn {
     int icur = -1;
     double fxtmp = 0.0, fytmp = 0.0, fztmp = 0.0;
     double dxtmp = 0.0, dytmp = 0.0, dztmp = 0.0;    // DAMP: the damping force on icur
+    auto flush = [&]() {
+      if (icur < 0) return;
+      f[icur].x += fxtmp;
+      f[icur].y += fytmp;
+      f[icur].z += fztmp;
+      if (DAMP) {
+        fd[icur].x += dxtmp;
+        fd[icur].y += dytmp;
+        fd[icur].z += dztmp;
+      }
+    };
+
+    // one pair, in list order: the link rule, special factors, forces, tallies; et and ft are
+    // the law with its tail at rsq, df the damping force on i
+    auto apply = [&](int i, int jraw, int jj, int tp, double delx, double dely, double delz,
+                     double rsq, double scale, double et, double ft, const xyz3 &df) {
+      const int j = jraw & NEIGHMASK;
+      if (i != icur) {
+        flush();
+        icur = i;
+        fxtmp = fytmp = fztmp = 0.0;
+        dxtmp = dytmp = dztmp = 0.0;
+      }
+      if (DAMP) {
+        dxtmp += df.x;
+        dytmp += df.y;
+        dztmp += df.z;
+        if (NEWTON_PAIR || j < nlocal) {
+          fd[j].x -= df.x;
+          fd[j].y -= df.y;
+          fd[j].z -= df.z;
+        }
+      }
+      double e = et, fpair = ft;
+      if constexpr (LINKED) {
+        const SplineCoeff &c = coeffs[tp];
+        int &word = words[i][jj];
+        const Making now = fresh && (!fresh[i] || !fresh[j]) ? MAKE_INITIAL : making;
+        const double w = NEWTON_PAIR || j < nlocal ? 1.0 : 0.5;
+        const LinkCoeff &lc = link_coeffs[tp];
+        bool on;
+        if (!trial) {    // the word is the state
+          on = SplineLinks::eval<TailT, KAPPA_ON, Law>(c, lc, rsq, word, now, w, changes, et, ft,
+                                                       e, fpair);
+        } else {    // a minimizer's trial point: the change is only marked
+          int linked = word & 1;
+          on = SplineLinks::eval<TailT, KAPPA_ON, Law>(c, lc, rsq, linked, now, w, changes, et,
+                                                       ft, e, fpair);
+          word = state_word(word, linked, 1);
+        }
+        if (!on) return;
+      }
+      if (rsq <= coeffs[tp].hardsq) singular(i, j, rsq / scale);
+      const double factor_lj = special_lj[jraw >> SBBITS & 3];
+      fpair *= factor_lj * scale;
+      fxtmp += delx * fpair;
+      fytmp += dely * fpair;
+      fztmp += delz * fpair;
+      if (NEWTON_PAIR || j < nlocal) {
+        f[j].x -= delx * fpair;
+        f[j].y -= dely * fpair;
+        f[j].z -= delz * fpair;
+      }
+      if (EVFLAG) tally(i, j, nlocal, NEWTON_PAIR, EFLAG ? factor_lj * e : 0.0, fpair, delx, dely, delz);
+    };
+
+    // BLOCK: the pairs go through the block (the law in its SIMD loop), else each is applied
+    // as it is read (a polynomial law costs less than storing and reloading it)
     int ii = iifrom, jjnext = 0;
     while (ii < iito) {
       // fill: list entries from (ii, jjnext) on, with their separations; without link state
@@ -116,6 +186,17 @@ namespace ClusterDyn {
           }
           const int tp = uniform ? ntp1 + 1 : tpi + type[j];
           if (!LINKED && rsq >= coeffs[tp].cutsq) continue;
+          if constexpr (!BLOCK) {
+            const SplineCoeff &c = coeffs[tp];
+            double ft;
+            const double et = TailT::template eval<KAPPA_ON, Law>(c, rsq, ft) - c.offset;
+            xyz3 df{0.0, 0.0, 0.0};
+            if (DAMP)
+              k.damping->force(k.damping->coeff[tp], c.cutsq, rsq, vi.x - v[j].x, vi.y - v[j].y,
+                               vi.z - v[j].z, delx, dely, delz, df);
+            apply(i, jraw, jj, tp, delx, dely, delz, rsq, scale, et, ft, df);
+            continue;
+          }
           const int m = b.n++;
           b.i[m] = i;
           b.jraw[m] = jraw;
@@ -145,82 +226,12 @@ namespace ClusterDyn {
         if (uniform) b.damp<true>(*k.damping, coeffs, ntp1);
         else b.damp<false>(*k.damping, coeffs, ntp1);
       }
-
-      // scatter, in list order: the link rule, special factors, forces, tallies
-      for (int p = 0; p < b.n; p++) {
-        const int i = b.i[p];
-        const int j = b.jraw[p] & NEIGHMASK;
-        if (i != icur) {
-          if (icur >= 0) {
-            f[icur].x += fxtmp;
-            f[icur].y += fytmp;
-            f[icur].z += fztmp;
-            if (DAMP) {
-              fd[icur].x += dxtmp;
-              fd[icur].y += dytmp;
-              fd[icur].z += dztmp;
-            }
-          }
-          icur = i;
-          fxtmp = fytmp = fztmp = 0.0;
-          dxtmp = dytmp = dztmp = 0.0;
-        }
-        const double rsq = b.rsq[p];
-        if (DAMP) {
-          dxtmp += b.dfx[p];
-          dytmp += b.dfy[p];
-          dztmp += b.dfz[p];
-          if (NEWTON_PAIR || j < nlocal) {
-            fd[j].x -= b.dfx[p];
-            fd[j].y -= b.dfy[p];
-            fd[j].z -= b.dfz[p];
-          }
-        }
-        double e = b.e[p], fpair = b.fpair[p];
-        if constexpr (LINKED) {
-          const SplineCoeff &c = coeffs[b.tp[p]];
-          int &word = words[i][b.jj[p]];
-          const Making now = fresh && (!fresh[i] || !fresh[j]) ? MAKE_INITIAL : making;
-          const double w = NEWTON_PAIR || j < nlocal ? 1.0 : 0.5;
-          const LinkCoeff &lc = link_coeffs[b.tp[p]];
-          bool on;
-          if (!trial) {    // the word is the state
-            on = SplineLinks::eval<TailT, KAPPA_ON, Law>(c, lc, rsq, word, now, w, changes,
-                                                         b.e[p], b.fpair[p], e, fpair);
-          } else {    // a minimizer's trial point: the change is only marked
-            int linked = word & 1;
-            on = SplineLinks::eval<TailT, KAPPA_ON, Law>(c, lc, rsq, linked, now, w, changes,
-                                                         b.e[p], b.fpair[p], e, fpair);
-            word = state_word(word, linked, 1);
-          }
-          if (!on) continue;
-        }
-        const double scale = CHAIN ? b.scale[p] : 1.0;
-        if (rsq <= coeffs[b.tp[p]].hardsq) singular(i, j, rsq / scale);
-        const double factor_lj = special_lj[b.jraw[p] >> SBBITS & 3];
-        fpair *= factor_lj * scale;
-        const double delx = b.delx[p], dely = b.dely[p], delz = b.delz[p];
-        fxtmp += delx * fpair;
-        fytmp += dely * fpair;
-        fztmp += delz * fpair;
-        if (NEWTON_PAIR || j < nlocal) {
-          f[j].x -= delx * fpair;
-          f[j].y -= dely * fpair;
-          f[j].z -= delz * fpair;
-        }
-        if (EVFLAG) tally(i, j, nlocal, NEWTON_PAIR, EFLAG ? factor_lj * e : 0.0, fpair, delx, dely, delz);
-      }
+      for (int p = 0; p < b.n; p++)
+        apply(b.i[p], b.jraw[p], LINKED ? b.jj[p] : 0, b.tp[p], b.delx[p], b.dely[p], b.delz[p],
+              b.rsq[p], CHAIN ? b.scale[p] : 1.0, b.e[p], b.fpair[p],
+              DAMP ? xyz3{b.dfx[p], b.dfy[p], b.dfz[p]} : xyz3{0.0, 0.0, 0.0});
     }
-    if (icur >= 0) {
-      f[icur].x += fxtmp;
-      f[icur].y += fytmp;
-      f[icur].z += fztmp;
-      if (DAMP) {
-        fd[icur].x += dxtmp;
-        fd[icur].y += dytmp;
-        fd[icur].z += dztmp;
-      }
-    }
+    flush();
   }
 
 }    // namespace ClusterDyn

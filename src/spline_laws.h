@@ -65,6 +65,7 @@ namespace ClusterDyn {
     static constexpr const char *q_name = nullptr;
     static constexpr int nargs = 3;
     static constexpr bool kappa_kernel = false;    // kappa folds into alpha
+    static constexpr bool vector_stage = true;     // exp: libmvec in the block's SIMD loop
     static constexpr bool singular = false;
     static constexpr bool has_inflection = true;
     static constexpr const char *wide_well_hint = "Morse needs kappa alpha a >= 1.557";
@@ -104,6 +105,7 @@ namespace ClusterDyn {
     static constexpr const char *q_name = nullptr;
     static constexpr int nargs = 3;
     static constexpr bool kappa_kernel = false;    // kappa folds into the stiffness
+    static constexpr bool vector_stage = false;    // a polynomial: applied as read
     static constexpr bool singular = false;
     static constexpr bool has_inflection = false;
     static constexpr const char *wide_well_hint = "";
@@ -144,6 +146,7 @@ namespace ClusterDyn {
     static constexpr const char *q_name = "m";
     static constexpr int nargs = 4;
     static constexpr bool kappa_kernel = true;
+    static constexpr bool vector_stage = true;     // pow: libmvec in the block's SIMD loop
     static constexpr bool singular = true;
     static constexpr bool has_inflection = true;
     static constexpr const char *wide_well_hint = "raise kappa or the exponents n, m";
@@ -206,6 +209,7 @@ namespace ClusterDyn {
     static constexpr const char *q_name = nullptr;
     static constexpr int nargs = 2;
     static constexpr bool kappa_kernel = true;
+    static constexpr bool vector_stage = false;    // powers by products: applied as read
     static constexpr bool singular = true;
     static constexpr bool has_inflection = true;
     static constexpr const char *wide_well_hint = "raise kappa";

@@ -341,7 +341,7 @@ def damped_run(lmp, log, fix, thermo, steps=200, units="lj", ntypes=2, newton="o
         lmp.commands_list([f"suffix {suffix}", "package omp 2"])
     if units == "lj":
         fcc_block(lmp, noise=0.05, temp=0.3, ntypes=ntypes)
-        coeff, dt = "1.0 6.0 1.0", 0.002
+        coeff, dt = "1.0 6.0 1.0" if pair.startswith("morse") else "1.0 1.0", 0.002
     else:  # the aluminium clusters of the 3D examples, 10 um
         a = 1.0e-5
         lmp.commands_list([
@@ -352,7 +352,7 @@ def damped_run(lmp, log, fix, thermo, steps=200, units="lj", ntypes=2, newton="o
             "velocity all create 1e16 4712 loop geom", f"neighbor {0.3 * a} bin"])
         if ntypes == 2:
             lmp.commands_list(["set type 1 type/fraction 2 0.5 4713", "mass 2 4.676e-12"])
-        coeff, dt = "2.46e-6 3.76e5 1.0e-5", 2e-10
+        coeff, dt = ("2.46e-6 3.76e5 1.0e-5" if pair.startswith("morse") else "2.46e-6 1.0e-5"), 2e-10
     lmp.commands_list([f"newton {newton} on", f"pair_style {pair}", f"pair_coeff * * {coeff}",
                        "pair_modify shift yes", f"timestep {dt}", "fix nve all nve", fix,
                        f"thermo {thermo}", "thermo_style custom step pe ke f_damp",
@@ -364,14 +364,17 @@ def damped_run(lmp, log, fix, thermo, steps=200, units="lj", ntypes=2, newton="o
     return arrays(lmp, "x")[order], arrays(lmp, "v")[order], removed
 
 
-@pytest.mark.parametrize("units,ntypes,newton,suffix", [
-    ("lj", 1, "on", None), ("lj", 2, "on", None), ("lj", 2, "off", None), ("si", 2, "on", None),
-    ("lj", 2, "on", "omp"), ("lj", 2, "off", "omp"), ("si", 1, "on", "omp")])
+@pytest.mark.parametrize("units,ntypes,newton,suffix,law", [
+    ("lj", 1, "on", None, "morse"), ("lj", 2, "on", None, "morse"), ("lj", 2, "off", None, "morse"),
+    ("si", 2, "on", None, "morse"), ("lj", 2, "on", "omp", "morse"),
+    ("lj", 2, "off", "omp", "morse"), ("si", 1, "on", "omp", "morse"),
+    ("lj", 2, "on", None, "lj"), ("si", 1, "off", "omp", "lj")])
 @pytest.mark.parametrize("options", ["gamma 2.0", "gamma 2.0 mode normal",
                                      "J 20 mode normal weight dpd", "J 20 weight dpd"])
 def test_damping_in_the_pair_pass_equals_the_fix_loop(tmp_path, units, ntypes, newton, suffix,
-                                                      options):
-    """/omp with 2 threads: thread 0 into fd, thread 1 into its block, summed after."""
+                                                      law, options):
+    """/omp with 2 threads: thread 0 into fd, thread 1 into its block, summed after.  lj/spline
+    applies each pair as it is read (no vector stage), morse/spline through the block."""
     if units == "si":
         options = options.replace("gamma 2.0", "gamma 1e8")
     runs = {}
@@ -379,7 +382,8 @@ def test_damping_in_the_pair_pass_equals_the_fix_loop(tmp_path, units, ntypes, n
         log = tmp_path / f"log.{thermo}"
         with session() as lmp:
             runs[thermo] = damped_run(lmp, log, f"fix damp all viscous/relative {options}", thermo,
-                                      units=units, ntypes=ntypes, newton=newton, suffix=suffix)
+                                      units=units, ntypes=ntypes, newton=newton, suffix=suffix,
+                                      pair=f"{law}/spline cut 1.3")
         assert FUSED in log.read_text()
     (x1, v1, e1), (x2, v2, e2) = runs[1], runs[200]
     assert e1 > 0
