@@ -122,11 +122,6 @@ void ComputeDust::init()
   if (cutoff_user == 0.0 && (!force->pair || !force->pair->cutsq))
     error->all(FLERR, "Compute dust: without the cutoff keyword it needs a pair style, whose "
                "cutoffs are the bond distances");
-  const int ntp1 = atom->ntypes + 1;
-  cutsq.assign(ntp1 * ntp1, cutoff_user * cutoff_user);
-  if (cutoff_user == 0.0)
-    for (int i = 1; i < ntp1; i++)
-      for (int j = 1; j < ntp1; j++) cutsq[i * ntp1 + j] = force->pair->cutsq[i][j];
 
   const double skin = neighbor->skin;
   const double cutghost = force->pair ? MAX(force->pair->cutforce + skin, comm->cutghostuser)
@@ -141,6 +136,17 @@ void ComputeDust::init()
   auto req = neighbor->add_request(this, NeighConst::REQ_OCCASIONAL);
   if (cutoff_user > 0.0 && (!force->pair || cutoff_user > force->pair->cutforce))
     req->set_cutoff(cutoff_user);
+}
+
+// per type pair, squared: the cutoff keyword's, or the pair style's cutoffs as they are now
+// (fix adapt may move them during a run: read again at each evaluation)
+void ComputeDust::bond_distances()
+{
+  const int ntp1 = atom->ntypes + 1;
+  cutsq.assign(ntp1 * ntp1, cutoff_user * cutoff_user);
+  if (cutoff_user == 0.0)
+    for (int i = 1; i < ntp1; i++)
+      for (int j = 1; j < ntp1; j++) cutsq[i * ntp1 + j] = force->pair->cutsq[i][j];
 }
 
 void ComputeDust::init_list(int, NeighList *ptr)
@@ -181,6 +187,7 @@ void ComputeDust::evaluate()
   if (!links) {
     comm->forward_comm();    // current ghost positions
     neighbor->build_one(list);
+    bond_distances();
   }
 
   const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;

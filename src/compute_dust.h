@@ -47,6 +47,7 @@ namespace ClusterDyn {
     std::vector<double> label; // per atom (and ghost): local fragment label
     bigint evaluated;          // step of the last evaluation
 
+    void bond_distances();
     void evaluate();
   };
 

@@ -34,6 +34,7 @@
 #include "error.h"
 #include "force.h"
 #include "memory.h"
+#include "modify.h"
 #include "neigh_list.h"
 #include "neigh_request.h"
 #include "neighbor.h"
@@ -100,24 +101,18 @@ void FixViscousRelative::init()
   if (state && opt.cutoff > 0.0)
     error->all(FLERR, "Fix viscous/relative: keyword cutoff does not apply under a pair style "
                "with link L (the linked pairs are the bonds it damps)");
-  double **stiffness = nullptr;
   if (opt.by_j) {
-    if (force->pair) stiffness = (double **) force->pair->extract("C", dim);
+    double **stiffness = force->pair ? (double **) force->pair->extract("C", dim) : nullptr;
     if (!stiffness || dim != 2)
       error->all(FLERR, "Fix viscous/relative J needs a pair style that provides the bond "
                  "stiffness C (this package's */spline styles); use gamma G with others");
   }
-  const int ntypes = atom->ntypes;
-  for (int i = 1; i <= ntypes; i++)
-    for (int j = 1; j <= ntypes; j++) {
-      TypePair &tp = typepair[i * (ntypes + 1) + j];
-      tp.cutsq = opt.cutoff > 0.0 ? opt.cutoff * opt.cutoff : force->pair->cutsq[i][j];
-      tp.stiffness = opt.by_j ? stiffness[i][j] : 0.0;
-      DampingCoeff &c = coeff[i * (ntypes + 1) + j];
-      c.inv_cut = tp.cutsq > 0.0 ? 1.0 / sqrt(tp.cutsq) : 0.0;
-      c.coef = atom->rmass ? 0.0 : friction(tp, atom->mass[i], atom->mass[j]);
-    }
-  fused = claim_pass();
+  // fix adapt may change the pair's cutoffs and C between two force evaluations: the tables
+  // follow before each of the fix's own loops, and the pass (whose tables would be read
+  // before the change) is not offered
+  adapting = !modify->get_fix_by_style("^adapt").empty();
+  type_tables();
+  fused = adapting ? 0 : claim_pass();
   pass.fd = nullptr;
 
   if (opt.cutoff > 0.0)
@@ -140,6 +135,24 @@ void FixViscousRelative::init()
                  "range {}: raise it with comm_modify cutoff", opt.cutoff, skin, cutghost);
     req->set_cutoff(opt.cutoff + skin);
   }
+}
+
+// per type pair: the damping range (the pair style's cutoffs, or the cutoff keyword), the
+// stiffness C (J style) and the pass's coefficients
+void FixViscousRelative::type_tables()
+{
+  int dim = 0;
+  double **stiffness = opt.by_j ? (double **) force->pair->extract("C", dim) : nullptr;
+  const int ntypes = atom->ntypes;
+  for (int i = 1; i <= ntypes; i++)
+    for (int j = 1; j <= ntypes; j++) {
+      TypePair &tp = typepair[i * (ntypes + 1) + j];
+      tp.cutsq = opt.cutoff > 0.0 ? opt.cutoff * opt.cutoff : force->pair->cutsq[i][j];
+      tp.stiffness = opt.by_j ? stiffness[i][j] : 0.0;
+      DampingCoeff &c = coeff[i * (ntypes + 1) + j];
+      c.inv_cut = tp.cutsq > 0.0 ? 1.0 / sqrt(tp.cutsq) : 0.0;
+      c.coef = atom->rmass ? 0.0 : friction(tp, atom->mass[i], atom->mass[j]);
+    }
 }
 
 void FixViscousRelative::init_list(int, NeighList *ptr)
@@ -242,6 +255,7 @@ void FixViscousRelative::clear_fd()
 
 double FixViscousRelative::compute_forces(int vflag)
 {
+  if (adapting) type_tables();
   v_init(vflag);
   clear_fd();
 

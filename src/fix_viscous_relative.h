@@ -42,6 +42,7 @@ namespace ClusterDyn {
     DampingCoeff *coeff;     // (ntypes+1)^2: m_ij G_ij / ftm2v (per-type masses), 1 / range
     DampingPass pass;        // the damping in the pair style's force pass (damping_pass.h)
     int fused;               // this run: the pair style took the pass
+    int adapting;            // this run has a fix adapt: the tables read before each loop
     double **fd;             // damping force per atom (own and ghost), summed to owners
     int maxfd;
     double removed;          // energy removed by this proc's kicks
@@ -54,6 +55,7 @@ namespace ClusterDyn {
     };
     Bonds current_bonds() const;
 
+    void type_tables();
     void clear_fd();
     int claim_pass();                    // at init: whether the pair style takes the pass
     double compute_forces(int vflag);    // returns the power sum of my atoms

@@ -201,6 +201,25 @@ template <class Law> double PairSpline<Law>::init_one(int i, int j)
   return table.at(i, j).rc * (setting.chain_n ? setting.chain_n : 1);
 }
 
+// fix adapt changed D, a, kappa or a law parameter: the kernel data again (init_one); each
+// type pair's reach must stay inside the neighbour lists the run was set up with, and cutsq
+// follows it (single(), fix viscous/relative's damping range)
+template <class Law> void PairSpline<Law>::reinit()
+{
+  Pair::reinit();
+  const int n = setting.chain_n ? setting.chain_n : 1;
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++) {
+      const double reach = table.at(i, j).rc * n;
+      const double listed = sqrt(neighbor->cutneighsq[i][j]) - neighbor->skin;
+      if (reach > listed * (1.0 + 1e-12))
+        error->all(FLERR, "Pair {}: fix adapt moved the cutoff of types {} {} to {:.6g} beyond {:.6g}, "
+                   "the cutoff the run's neighbour lists were made for: give pair_coeff the "
+                   "largest a (and rc) the run reaches", Law::style, i, j, reach, listed);
+      cutsq[i][j] = cutsq[j][i] = reach * reach;
+    }
+}
+
 /* ---------------------------------------------------------------------- */
 
 template <class Law> void PairSpline<Law>::write_restart(FILE *fp)

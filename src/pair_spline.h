@@ -39,6 +39,7 @@ namespace ClusterDyn {
     void coeff(int, char **) override;
     void init_style() override;
     double init_one(int, int) override;
+    void reinit() override;
     void write_restart(FILE *) override;
     void read_restart(FILE *) override;
     void write_restart_settings(FILE *) override;

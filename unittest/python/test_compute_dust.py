@@ -349,3 +349,20 @@ def test_local_rows_carry_mass_position_velocity_units(units, length, mass, spee
              -0.5 * speed, 0.75 * speed, 0.0, 0]
     single = [3, 1, mass, 7 * length, 7 * length, 7 * length, 0.0, 0.0, 2 * speed, 1]
     assert rows == pytest.approx(np.array([dimer, single]), rel=1e-14, abs=1e-14 * speed)
+
+
+def test_bond_distances_follow_fix_adapt():
+    """Two atoms 1.2 apart under morse/spline cut 1.3 (bond distance Rc a = 1.3): one fragment;
+    fix adapt setting a = 0.9 makes the bond distance 1.17 and the pair two fragments, as
+    pair_coeff a = 0.9 does (the pair's cutoffs as they are at each evaluation)."""
+    counts = {}
+    for case, coeff, adapt in [("a 1", "1.0", []), ("a 0.9", "0.9", []),
+                               ("adapt 0.9", "1.0", ["variable k equal 0.9",
+                                                     "fix ad all adapt 1 pair morse/spline a * * v_k"])]:
+        with session() as lmp:
+            single_atoms(lmp, [(1, 5, 5), (2.2, 5, 5)])
+            lmp.commands_list(["pair_style morse/spline cut 1.3",
+                               f"pair_coeff * * 1.0 6.0 {coeff}"] + adapt)
+            vec, _ = evaluate(lmp)
+        counts[case] = vec["nfrag"]
+    assert counts == {"a 1": 1, "a 0.9": 2, "adapt 0.9": 2}

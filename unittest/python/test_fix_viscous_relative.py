@@ -454,3 +454,40 @@ def test_the_pass_follows_unfix_and_a_new_pair_style(tmp_path):
     assert removed > 0
     assert "damp: damping summed in pair morse/spline's" in text
     assert "damp2: damping summed in pair lj/spline's" in text
+
+
+def test_under_fix_adapt_the_damping_follows_the_pairs_cutoffs_and_stiffness(tmp_path):
+    """fix adapt setting a = 0.95 (pair_coeff 1.0) damps as pair_coeff a = 0.95 does: the fix's
+    range (Rc a, weight dpd) and C (J) are the pair's at each step, not those at init.  Under
+    fix adapt the pass is not taken (its tables would be read before the change); a ramp of a
+    gives the same run with energy tallies on every step as with none."""
+    fix = "fix damp all viscous/relative J 20 mode normal weight dpd"
+    adapt = "fix ad all adapt 1 pair morse/spline a * * v_aa"
+    runs = {}
+    for case, pre, cmds, thermo in [
+            ("coeff", [], [], 200),
+            ("adapt", ["variable aa equal 0.95"], [adapt], 200),
+            ("ramp1", ["variable aa equal 1.0-0.1*step/200"], [adapt], 1),
+            ("ramp200", ["variable aa equal 1.0-0.1*step/200"], [adapt], 200)]:
+        log = tmp_path / f"log.{case}"
+        with session() as lmp:
+            lmp.command(f"log {log}")
+            fcc_block(lmp, noise=0.05, temp=0.3)
+            coeff = "0.95" if case == "coeff" else "1.0"
+            lmp.commands_list(pre + ["pair_style morse/spline cut 1.3",
+                                     f"pair_coeff * * 1.0 6.0 {coeff}", "timestep 0.002",
+                                     "fix nve all nve", fix] + cmds +
+                              [f"thermo {thermo}", "run 200 post no"])
+            lmp.command("log none")
+            ids = np.array(lmp.gather_atoms("id", 0, 1))
+            order = np.argsort(ids)
+            runs[case] = (arrays(lmp, "v")[order], lmp.extract_fix("damp", 0, 0))
+    for a, b in [("coeff", "adapt"), ("ramp1", "ramp200")]:
+        (v1, e1), (v2, e2) = runs[a], runs[b]
+        assert e1 > 0
+        assert e2 == pytest.approx(e1, rel=1e-10), (a, b)
+        assert np.max(np.abs(v2 - v1)) <= 1e-10 * np.max(np.abs(v1)), (a, b)
+    # the ramp damps differently from the fixed a (not a vacuous comparison)
+    assert runs["ramp1"][1] != pytest.approx(runs["adapt"][1], rel=1e-3)
+    for case in runs:
+        assert (FUSED in (tmp_path / f"log.{case}").read_text()) == (case == "coeff"), case

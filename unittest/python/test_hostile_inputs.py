@@ -398,6 +398,17 @@ row("adapt-omp-kappa-0", dimer(omp=True) + pair("morse/spline", "cut 1.3", omp=T
     ["variable k equal 0", "fix a all adapt 1 pair morse/spline/omp kappa * * v_k"], NEED)
 row("adapt-lj-a-0", dimer() + pair("lj/spline", "cut 1.3"),
     ["variable k equal 0", "fix a all adapt 1 pair lj/spline a * * v_k"], NEED)
+# a cutoff (Rc a) that fix adapt moves past the neighbour lists' reach would lose pairs
+GROWN = r"fix adapt moved the cutoff of types 1 1 to 1\.313 beyond 1\.3,"
+row("adapt-a-grows-past-list", MORSE, ["variable k equal 1.0+step*0.01", "fix n all nve",
+                                       "fix a all adapt 1 pair morse/spline a * * v_k",
+                                       "run 10 post no"], GROWN)
+row("adapt-omp-a-grows-past-list", dimer(omp=True) + pair("morse/spline", "cut 1.3", omp=True),
+    ["variable k equal 1.0+step*0.01", "fix n all nve",
+     "fix a all adapt 1 pair morse/spline/omp a * * v_k", "run 10 post no"], GROWN)
+row("adapt-a-shrinks", MORSE, ["variable k equal 1.0-step*0.01", "fix n all nve",
+                               "fix a all adapt 1 pair morse/spline a * * v_k",
+                               "run 10 post no"], OK)
 row("adapt-kappa-ramp", MORSE, ["variable k equal 0.5+step*0.01", "fix n all nve",
                                 "fix a all adapt 1 pair morse/spline kappa * * v_k",
                                 "run 10 post no"], OK)
