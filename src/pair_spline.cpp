@@ -24,7 +24,7 @@ using namespace ClusterDyn;
 template <class Law>
 PairSpline<Law>::PairSpline(LAMMPS *lmp) :
     Pair(lmp), table(lmp), state(lmp, this, std::string("Pair style ") + Law::style, 0),
-    kappa_any(0), damping(nullptr)
+    kappa_any(0), damping(nullptr), listed(0)
 {
   writedata = 1;
   born_matrix_enable = 1;
@@ -172,6 +172,7 @@ template <class Law> void PairSpline<Law>::init_style()
     error->all(FLERR, "Pair {}: pair_modify tail yes does not apply (the interaction ends at "
                "the tail's end)", Law::style);
   damping = nullptr;    // claimed by fix viscous/relative's init, after this
+  listed = 0;           // init_one() below is the run's own
   if (links.on()) {
     neighbor->add_request(this, NeighConst::REQ_HISTORY);
     state.init();
@@ -198,26 +199,25 @@ template <class Law> double PairSpline<Law>::init_one(int i, int j)
                "not mix: give pair_coeff {} {} ...)", Law::style, i, j, i, j);
   table.derive(i, j, setting, offset_flag, links);
   table.mirror(i, j);
-  return table.at(i, j).rc * (setting.chain_n ? setting.chain_n : 1);
+  const double reach = table.at(i, j).rc * (setting.chain_n ? setting.chain_n : 1);
+  // fix adapt (reinit(), also through a hybrid style) may move Rc a during a run
+  if (listed) {
+    const double made = sqrt(neighbor->cutneighsq[i][j]) - neighbor->skin;
+    if (reach > made * (1.0 + 1e-12))
+      error->all(FLERR, "Pair {}: fix adapt moved the cutoff of types {} {} to {:.6g} beyond "
+                 "{:.6g}, the cutoff the run's neighbour lists were made for: give pair_coeff "
+                 "the largest a (and rc) the run reaches", Law::style, i, j, reach, made);
+  }
+  cutsq[i][j] = cutsq[j][i] = reach * reach;    // as Pair::init does; its reinit() does not
+  return reach;
 }
 
-// fix adapt changed D, a, kappa or a law parameter: the kernel data again (init_one); each
-// type pair's reach must stay inside the neighbour lists the run was set up with, and cutsq
-// follows it (single(), fix viscous/relative's damping range)
-template <class Law> void PairSpline<Law>::reinit()
+// the neighbour lists of this run exist: from now on (fix adapt's reinit()) a type pair's
+// cutoff must stay inside the one they were made for
+template <class Law> void PairSpline<Law>::init_list(int id, NeighList *ptr)
 {
-  Pair::reinit();
-  const int n = setting.chain_n ? setting.chain_n : 1;
-  for (int i = 1; i <= atom->ntypes; i++)
-    for (int j = i; j <= atom->ntypes; j++) {
-      const double reach = table.at(i, j).rc * n;
-      const double listed = sqrt(neighbor->cutneighsq[i][j]) - neighbor->skin;
-      if (reach > listed * (1.0 + 1e-12))
-        error->all(FLERR, "Pair {}: fix adapt moved the cutoff of types {} {} to {:.6g} beyond {:.6g}, "
-                   "the cutoff the run's neighbour lists were made for: give pair_coeff the "
-                   "largest a (and rc) the run reaches", Law::style, i, j, reach, listed);
-      cutsq[i][j] = cutsq[j][i] = reach * reach;
-    }
+  Pair::init_list(id, ptr);
+  listed = 1;
 }
 
 /* ---------------------------------------------------------------------- */

@@ -406,6 +406,12 @@ row("adapt-a-grows-past-list", MORSE, ["variable k equal 1.0+step*0.01", "fix n 
 row("adapt-omp-a-grows-past-list", dimer(omp=True) + pair("morse/spline", "cut 1.3", omp=True),
     ["variable k equal 1.0+step*0.01", "fix n all nve",
      "fix a all adapt 1 pair morse/spline/omp a * * v_k", "run 10 post no"], GROWN)
+row("adapt-hybrid-a-grows-past-list", dimer() + [
+    "pair_style hybrid/overlay lj/cut 1.5 morse/spline cut 1.3", "pair_coeff * * lj/cut 0.1 1.0",
+    "pair_coeff * * morse/spline 1.0 6.0 1.0"],
+    ["variable k equal 1.0+step*0.2", "fix n all nve",
+     "fix a all adapt 1 pair morse/spline a * * v_k", "run 10 post no"],
+    r"fix adapt moved the cutoff of types 1 1 to 1\.56 beyond 1\.5,")
 row("adapt-a-shrinks", MORSE, ["variable k equal 1.0-step*0.01", "fix n all nve",
                                "fix a all adapt 1 pair morse/spline a * * v_k",
                                "run 10 post no"], OK)
