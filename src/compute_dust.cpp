@@ -35,6 +35,7 @@
 #include "error.h"
 #include "force.h"
 #include "memory.h"
+#include "modify.h"
 #include "neigh_list.h"
 #include "neigh_request.h"
 #include "neighbor.h"
@@ -122,6 +123,11 @@ void ComputeDust::init()
   if (cutoff_user == 0.0 && (!force->pair || !force->pair->cutsq))
     error->all(FLERR, "Compute dust: without the cutoff keyword it needs a pair style, whose "
                "cutoffs are the bond distances");
+  if (cutoff_user == 0.0 && utils::strmatch(force->pair_style, "^hybrid") &&
+      !modify->get_fix_by_style("^adapt").empty() && comm->me == 0)
+    error->warning(FLERR, "Compute dust: under pair_style {} the bond distances are the "
+                   "hybrid's cutoffs as the run starts; fix adapt changing a sub-style's cutoffs "
+                   "does not move them (give the cutoff keyword)", force->pair_style);
 
   const double skin = neighbor->skin;
   const double cutghost = force->pair ? MAX(force->pair->cutforce + skin, comm->cutghostuser)

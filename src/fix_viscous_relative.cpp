@@ -111,6 +111,11 @@ void FixViscousRelative::init()
   // follow before each of the fix's own loops, and the pass (whose tables would be read
   // before the change) is not offered
   adapting = !modify->get_fix_by_style("^adapt").empty();
+  if (adapting && opt.cutoff == 0.0 && utils::strmatch(force->pair_style, "^hybrid") &&
+      comm->me == 0)
+    error->warning(FLERR, "Fix viscous/relative: under pair_style {} the damping range is the "
+                   "hybrid's cutoffs as the run starts; fix adapt changing a sub-style's cutoffs "
+                   "does not move it (give the cutoff keyword)", force->pair_style);
   type_tables();
   fused = adapting ? 0 : claim_pass();
   pass.fd = nullptr;
@@ -181,6 +186,7 @@ int FixViscousRelative::claim_pass()
 
 void FixViscousRelative::setup(int vflag)
 {
+  if (adapting) type_tables();    // fix adapt changed the pair at setup_pre_force
   check_stability();
   power_full = compute_forces(vflag);    // v(0): no kick before the first output
 }

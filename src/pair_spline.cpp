@@ -172,18 +172,17 @@ template <class Law> void PairSpline<Law>::init_style()
     error->all(FLERR, "Pair {}: pair_modify tail yes does not apply (the interaction ends at "
                "the tail's end)", Law::style);
   damping = nullptr;    // claimed by fix viscous/relative's init, after this
-  listed = 0;           // init_one() below is the run's own
+  listed = 0;           // the init_one() calls that follow are the run's own
   if (links.on()) {
     neighbor->add_request(this, NeighConst::REQ_HISTORY);
     state.init();
   } else
     neighbor->add_request(this);
-  kappa_any = 0;
+  kappa_any = 0;    // set by init_one()
   double cutmax = 0.0;
   for (int i = 1; i <= atom->ntypes; i++)
     for (int j = i; j <= atom->ntypes; j++)
       if (setflag[i][j]) {
-        if (table.kappa[i][j] != 1.0) kappa_any = 1;
         table.derive(i, j, setting, offset_flag, links);
         cutmax = MAX(cutmax, table.at(i, j).rc * (setting.chain_n ? setting.chain_n : 1));
       }
@@ -199,24 +198,26 @@ template <class Law> double PairSpline<Law>::init_one(int i, int j)
                "not mix: give pair_coeff {} {} ...)", Law::style, i, j, i, j);
   table.derive(i, j, setting, offset_flag, links);
   table.mirror(i, j);
+  if (table.kappa[i][j] != 1.0) kappa_any = 1;    // the kappa kernel, also after fix adapt
   const double reach = table.at(i, j).rc * (setting.chain_n ? setting.chain_n : 1);
   // fix adapt (reinit(), also through a hybrid style) may move Rc a during a run
   if (listed) {
     const double made = sqrt(neighbor->cutneighsq[i][j]) - neighbor->skin;
     if (reach > made * (1.0 + 1e-12))
       error->all(FLERR, "Pair {}: fix adapt moved the cutoff of types {} {} to {:.6g} beyond "
-                 "{:.6g}, the cutoff the run's neighbour lists were made for: give pair_coeff "
-                 "the largest a (and rc) the run reaches", Law::style, i, j, reach, made);
+                 "{:.6g}, its value when the run's neighbour lists were made: before the run, "
+                 "give pair_coeff the largest a (and rc) it reaches, or use fix adapt reset yes",
+                 Law::style, i, j, reach, made);
   }
   cutsq[i][j] = cutsq[j][i] = reach * reach;    // as Pair::init does; its reinit() does not
   return reach;
 }
 
-// the neighbour lists of this run exist: from now on (fix adapt's reinit()) a type pair's
+// the run's neighbour lists are made (every run and minimization with setup, also when the
+// lists are kept from the run before): from now on (fix adapt's reinit()) a type pair's
 // cutoff must stay inside the one they were made for
-template <class Law> void PairSpline<Law>::init_list(int id, NeighList *ptr)
+template <class Law> void PairSpline<Law>::setup()
 {
-  Pair::init_list(id, ptr);
   listed = 1;
 }
 

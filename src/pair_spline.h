@@ -39,7 +39,7 @@ namespace ClusterDyn {
     void coeff(int, char **) override;
     void init_style() override;
     double init_one(int, int) override;
-    void init_list(int, NeighList *) override;
+    void setup() override;
     void write_restart(FILE *) override;
     void read_restart(FILE *) override;
     void write_restart_settings(FILE *) override;
@@ -65,7 +65,7 @@ namespace ClusterDyn {
     int kappa_any;                      // some pair has kappa != 1: the general kernel
     DampingPass *damping;               // the slot: fix viscous/relative's pass
                                         // (damping_pass.h), claimed at its init
-    int listed;                         // this run's neighbour lists are made (init_list)
+    int listed;                         // this run's neighbour lists are made (setup)
 
     void allocate();
     void apply(const SplineSettings &s);

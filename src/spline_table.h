@@ -18,6 +18,7 @@
 #include <cmath>
 #include <cstring>
 #include <string>
+#include <vector>
 
 namespace LAMMPS_NS {
 namespace ClusterDyn {
@@ -27,6 +28,7 @@ namespace ClusterDyn {
     double **d0, **a0, **p0, **q0, **kappa, **rc_pair, **rs_pair;    // rc, rs: 0 = global
     double **stiffness;         // C = Pi''(a) of the kappa-modified law (extract "C")
     SplineCoeff *coeffs;        // (ntypes+1)^2 packed kernel data
+    std::vector<double> stiffness_made;    // C as mirror() last derived it
     int np1;
 
     explicit SplineTable(LAMMPS *lmp) : Pointers(lmp), coeffs(nullptr), np1(0)
@@ -43,6 +45,9 @@ namespace ClusterDyn {
       np1 = ntypes + 1;
       for (double ***v : {&d0, &a0, &p0, &q0, &kappa, &rc_pair, &rs_pair, &stiffness})
         memory->create(*v, np1, np1, "pair:spline");
+      for (int i = 0; i < np1; i++)
+        for (int j = 0; j < np1; j++) stiffness[i][j] = 0.0;
+      stiffness_made.assign(np1 * np1, 0.0);
       coeffs = new SplineCoeff[np1 * np1]();
     }
     const SplineCoeff &at(int i, int j) const { return coeffs[i * np1 + j]; }
@@ -65,13 +70,20 @@ namespace ClusterDyn {
       for (int i = 1; i < np1; i++)
         for (int j = i; j < np1; j++) rc_pair[i][j] = rs_pair[i][j] = 0.0;
     }
-    // init_one(): j,i as i,j; the stiffness C
+    // init_one(): j,i as i,j; the stiffness C, which is derived, not a parameter: a value
+    // written into it (fix adapt through extract "C") would be lost here
     void mirror(int i, int j)
     {
       for (auto *v : {d0, a0, p0, q0, kappa, rc_pair, rs_pair}) v[j][i] = v[i][j];
+      if (stiffness[i][j] != stiffness_made[i * np1 + j])
+        error->all(FLERR, "Pair {}: C of types {} {} is the law's stiffness, derived from its "
+                   "parameters: fix adapt cannot set it (adapt D, a, kappa{}{})", Law::style, i, j,
+                   Law::p_name ? std::string(", ") + Law::p_name : "",
+                   Law::q_name ? std::string(", ") + Law::q_name : "");
       double d[4];
       kappa_derivs<Law>(at(i, j), at(i, j).a, d);
       stiffness[i][j] = stiffness[j][i] = d[2];
+      stiffness_made[i * np1 + j] = stiffness_made[j * np1 + i] = d[2];
     }
 
     void derive(int i, int j, const SplineSettings &s, int offset_flag, SplineLinks &links);

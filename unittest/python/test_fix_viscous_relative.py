@@ -491,3 +491,44 @@ def test_under_fix_adapt_the_damping_follows_the_pairs_cutoffs_and_stiffness(tmp
     assert runs["ramp1"][1] != pytest.approx(runs["adapt"][1], rel=1e-3)
     for case in runs:
         assert (FUSED in (tmp_path / f"log.{case}").read_text()) == (case == "coeff"), case
+
+
+def test_under_fix_adapt_the_stability_check_sees_the_adapted_stiffness():
+    """kappa 2 (C x 4) makes J 0.5 unstable at this step: pair_coeff kappa 2 and fix adapt
+    setting kappa 2 stop with the same error (the check runs after adapt's change)."""
+    messages = []
+    for kappa, adapt in [("2.0", []), ("1.0", ["variable k equal 2.0",
+                                                "fix ad all adapt 1 pair morse/spline kappa * * v_k"])]:
+        with session() as lmp:
+            fcc_block(lmp)
+            lmp.commands_list(["pair_style morse/spline cut 1.3",
+                               f"pair_coeff * * 1.0 6.0 1.0 kappa {kappa}", "timestep 0.004",
+                               "fix nve all nve", "fix damp all viscous/relative J 0.5"] + adapt)
+            with pytest.raises(Exception) as err:
+                lmp.command("run 10 post no")
+            messages.append(str(err.value))
+    assert "the damping is unstable" in messages[0]
+    assert messages[1] == messages[0]
+
+
+def test_under_a_hybrid_style_and_fix_adapt_the_fixed_cutoffs_are_a_warning(tmp_path):
+    """Under pair_style hybrid the damping range and the dust bond distances are the hybrid's
+    cutoffs, which fix adapt does not move: both say so (only where a fix adapt exists)."""
+    texts = []
+    for adapt in ([], ["variable k equal 0.95", "fix ad all adapt 1 pair morse/spline a * * v_k"]):
+        log = tmp_path / f"log.{len(adapt)}"
+        with session() as lmp:
+            lmp.command(f"log {log}")
+            fcc_block(lmp)
+            lmp.commands_list(["pair_style hybrid/overlay morse/spline cut 1.3 zero 1.3",
+                               "pair_coeff * * morse/spline 1.0 6.0 1.0", "pair_coeff * * zero",
+                               "compute d all dust", "thermo_style custom step pe c_d[1]",
+                               "fix nve all nve", "fix damp all viscous/relative gamma 1.0"]
+                              + adapt + ["run 5 post no"])
+            lmp.command("log none")
+        texts.append(log.read_text())
+    for text, warned in zip(texts, (False, True)):
+        assert ("WARNING: Fix viscous/relative: under pair_style hybrid/overlay the damping range "
+                "is the hybrid's cutoffs" in text) == warned
+        assert ("WARNING: Compute dust: under pair_style hybrid/overlay the bond distances are "
+                "the hybrid's cutoffs" in text) == warned

@@ -412,6 +412,21 @@ row("adapt-hybrid-a-grows-past-list", dimer() + [
     ["variable k equal 1.0+step*0.2", "fix n all nve",
      "fix a all adapt 1 pair morse/spline a * * v_k", "run 10 post no"],
     r"fix adapt moved the cutoff of types 1 1 to 1\.56 beyond 1\.5,")
+row("adapt-a-grows-in-a-later-run", MORSE,
+    ["fix n all nve", "run 0 post no", "variable k equal 1.1",
+     "fix a all adapt 1 pair morse/spline a * * v_k", "run 0 post no"],
+    r"fix adapt moved the cutoff of types 1 1 to 1\.43 beyond 1\.3,")
+# reset no keeps a = 0.9 for the next run, whose lists are made for it: a back to 1 is past them
+row("adapt-a-back-up-after-reset-no", MORSE,
+    ["fix n all nve", "variable k equal 0.9", "fix a all adapt 1 pair morse/spline a * * v_k",
+     "run 0 post no", "variable k equal 1.0", "run 0 post no"],
+    r"fix adapt moved the cutoff of types 1 1 to 1\.3 beyond 1\.17,")
+row("adapt-a-back-up-after-reset-yes", MORSE,
+    ["fix n all nve", "variable k equal 0.9",
+     "fix a all adapt 1 pair morse/spline a * * v_k reset yes", "run 0 post no",
+     "variable k equal 1.0", "run 0 post no"], OK)
+row("adapt-C", MORSE, ["variable k equal 5", "fix a all adapt 1 pair morse/spline C * * v_k"],
+    r"C of types 1 1 is the law's stiffness, derived from its parameters")
 row("adapt-a-shrinks", MORSE, ["variable k equal 1.0-step*0.01", "fix n all nve",
                                "fix a all adapt 1 pair morse/spline a * * v_k",
                                "run 10 post no"], OK)

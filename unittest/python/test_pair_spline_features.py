@@ -110,6 +110,24 @@ def test_fix_adapt_changes_depth_through_extract():
     assert pe2 == pytest.approx(2.5 * pe1, rel=1e-12)
 
 
+@pytest.mark.parametrize("style,coeff,tail,kappa", [
+    ("lj/spline", "1.0 1.0", "cut 1.6", "0.8"),
+    ("mie/spline", "1.0 1.0 12 6", "lagunov 1.6 start 1.2", "0.8"),
+    ("morse/spline", "1.0 6.0 1.0", "wagner", "1.25")])    # wagner's end moves in with kappa > 1
+def test_fix_adapt_of_kappa_equals_pair_coeff_kappa(style, coeff, tail, kappa):
+    """kappa adapted from 1 gives the forces, energy and pressure of pair_coeff kappa: the
+    kappa kernel follows (lj and mie have a kernel of their own for kappa)."""
+    states = []
+    for given, adapt in [(kappa, []), ("1.0", [f"variable k equal {kappa}",
+                                                f"fix ad all adapt 1 pair {style} kappa * * v_k"])]:
+        with session() as lmp:
+            fcc_block(lmp, noise=0.05)
+            lmp.commands_list([f"pair_style {style} {tail}",
+                               f"pair_coeff * * {coeff} kappa {given}"] + adapt)
+            states.append(state(lmp))
+    assert_same_state(states[0], states[1])
+
+
 def test_missing_pair_is_an_error_naming_it():
     with session() as lmp:
         fcc_block(lmp, ntypes=2)
