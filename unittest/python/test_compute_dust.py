@@ -351,18 +351,25 @@ def test_local_rows_carry_mass_position_velocity_units(units, length, mass, spee
     assert rows == pytest.approx(np.array([dimer, single]), rel=1e-14, abs=1e-14 * speed)
 
 
-def test_bond_distances_follow_fix_adapt():
-    """Two atoms 1.2 apart under morse/spline cut 1.3 (bond distance Rc a = 1.3): one fragment;
-    fix adapt setting a = 0.9 makes the bond distance 1.17 and the pair two fragments, as
-    pair_coeff a = 0.9 does (the pair's cutoffs as they are at each evaluation)."""
+@pytest.mark.parametrize("units,unit,law", [("lj", 1.0, "1.0 6.0"),
+                                             ("si", 1.0e-5, "2.46e-6 3.76e5")])
+def test_bond_distances_follow_fix_adapt(units, unit, law):
+    """Two atoms 1.2 a apart under morse/spline cut 1.3 (bond distance Rc a = 1.3 a): one
+    fragment; fix adapt setting a = 0.9 makes the bond distance 1.17 a and the pair two
+    fragments, as pair_coeff a = 0.9 does (the pair's cutoffs as they are at each evaluation)."""
     counts = {}
-    for case, coeff, adapt in [("a 1", "1.0", []), ("a 0.9", "0.9", []),
-                               ("adapt 0.9", "1.0", ["variable k equal 0.9",
-                                                     "fix ad all adapt 1 pair morse/spline a * * v_k"])]:
+    for case, a, adapt in [("a 1", 1.0, False), ("a 0.9", 0.9, False), ("adapt 0.9", 1.0, True)]:
         with session() as lmp:
-            single_atoms(lmp, [(1, 5, 5), (2.2, 5, 5)])
-            lmp.commands_list(["pair_style morse/spline cut 1.3",
-                               f"pair_coeff * * 1.0 6.0 {coeff}"] + adapt)
+            lmp.commands_list([
+                f"units {units}", "atom_modify map array",
+                f"region box block 0 {10 * unit!r} 0 {10 * unit!r} 0 {10 * unit!r}",
+                "create_box 1 box", "mass 1 1.0", f"neighbor {0.3 * unit!r} bin",
+                f"create_atoms 1 single {unit!r} {5 * unit!r} {5 * unit!r} units box",
+                f"create_atoms 1 single {2.2 * unit!r} {5 * unit!r} {5 * unit!r} units box",
+                "pair_style morse/spline cut 1.3", f"pair_coeff * * {law} {a * unit!r}"])
+            if adapt:
+                lmp.commands_list([f"variable k equal {0.9 * unit!r}",
+                                   "fix ad all adapt 1 pair morse/spline a * * v_k"])
             vec, _ = evaluate(lmp)
         counts[case] = vec["nfrag"]
     assert counts == {"a 1": 1, "a 0.9": 2, "adapt 0.9": 2}

@@ -332,16 +332,18 @@ FUSED = "damping summed in pair"
 
 
 def damped_run(lmp, log, fix, thermo, steps=200, units="lj", ntypes=2, newton="on",
-               pair="morse/spline cut 1.3", suffix=None):
+               pair="morse/spline cut 1.3", suffix=None, a_scale=1.0, extra=()):
     """A hot damped block; thermo 1 asks for the energy on every step, so the pair style never
     takes the damping into its pass (steps with tallies), thermo `steps` leaves it every step
-    but the first and last.  Returns positions, velocities (by atom ID) and the energy removed."""
+    but the first and last.  a_scale: pair_coeff's a in units of the lattice's; extra: commands
+    after the fix.  Returns positions, velocities (by atom ID) and the energy removed."""
     lmp.command(f"log {log}")
     if suffix:
         lmp.commands_list([f"suffix {suffix}", "package omp 2"])
     if units == "lj":
         fcc_block(lmp, noise=0.05, temp=0.3, ntypes=ntypes)
-        coeff, dt = "1.0 6.0 1.0" if pair.startswith("morse") else "1.0 1.0", 0.002
+        coeff, dt = (f"1.0 6.0 {a_scale!r}" if pair.startswith("morse") else
+                     f"1.0 {a_scale!r}"), 0.002
     else:  # the aluminium clusters of the 3D examples, 10 um
         a = 1.0e-5
         lmp.commands_list([
@@ -352,10 +354,11 @@ def damped_run(lmp, log, fix, thermo, steps=200, units="lj", ntypes=2, newton="o
             "velocity all create 1e16 4712 loop geom", f"neighbor {0.3 * a} bin"])
         if ntypes == 2:
             lmp.commands_list(["set type 1 type/fraction 2 0.5 4713", "mass 2 4.676e-12"])
-        coeff, dt = ("2.46e-6 3.76e5 1.0e-5" if pair.startswith("morse") else "2.46e-6 1.0e-5"), 2e-10
+        coeff, dt = (f"2.46e-6 3.76e5 {a_scale * a!r}" if pair.startswith("morse") else
+                     f"2.46e-6 {a_scale * a!r}"), 2e-10
     lmp.commands_list([f"newton {newton} on", f"pair_style {pair}", f"pair_coeff * * {coeff}",
                        "pair_modify shift yes", f"timestep {dt}", "fix nve all nve", fix,
-                       f"thermo {thermo}", "thermo_style custom step pe ke f_damp",
+                       *extra, f"thermo {thermo}", "thermo_style custom step pe ke f_damp",
                        f"run {steps} post no"])
     removed = lmp.extract_fix("damp", 0, 0)
     lmp.command("log none")
@@ -456,32 +459,25 @@ def test_the_pass_follows_unfix_and_a_new_pair_style(tmp_path):
     assert "damp2: damping summed in pair lj/spline's" in text
 
 
-def test_under_fix_adapt_the_damping_follows_the_pairs_cutoffs_and_stiffness(tmp_path):
-    """fix adapt setting a = 0.95 (pair_coeff 1.0) damps as pair_coeff a = 0.95 does: the fix's
-    range (Rc a, weight dpd) and C (J) are the pair's at each step, not those at init.  Under
-    fix adapt the pass is not taken (its tables would be read before the change); a ramp of a
-    gives the same run with energy tallies on every step as with none."""
+@pytest.mark.parametrize("units", ["lj", "si"])
+def test_under_fix_adapt_the_damping_follows_the_pairs_cutoffs_and_stiffness(tmp_path, units):
+    """fix adapt setting a = 0.95 (pair_coeff 1.0, in lattice units) damps as pair_coeff a =
+    0.95 does: the fix's range (Rc a, weight dpd) and C (J) are the pair's at each step, not
+    those at init.  Under fix adapt the pass is not taken (its tables would be read before the
+    change); a ramp of a gives the same run with energy tallies on every step as with none."""
+    unit = 1.0 if units == "lj" else 1.0e-5
     fix = "fix damp all viscous/relative J 20 mode normal weight dpd"
-    adapt = "fix ad all adapt 1 pair morse/spline a * * v_aa"
+    adapt = [f"fix ad all adapt 1 pair morse/spline a * * v_aa"]
     runs = {}
-    for case, pre, cmds, thermo in [
-            ("coeff", [], [], 200),
-            ("adapt", ["variable aa equal 0.95"], [adapt], 200),
-            ("ramp1", ["variable aa equal 1.0-0.1*step/200"], [adapt], 1),
-            ("ramp200", ["variable aa equal 1.0-0.1*step/200"], [adapt], 200)]:
-        log = tmp_path / f"log.{case}"
+    for case, a_scale, extra, thermo in [
+            ("coeff", 0.95, [], 200),
+            ("adapt", 1.0, [f"variable aa equal {0.95 * unit!r}"] + adapt, 200),
+            ("ramp1", 1.0, [f"variable aa equal {unit!r}*(1.0-0.1*step/200)"] + adapt, 1),
+            ("ramp200", 1.0, [f"variable aa equal {unit!r}*(1.0-0.1*step/200)"] + adapt, 200)]:
         with session() as lmp:
-            lmp.command(f"log {log}")
-            fcc_block(lmp, noise=0.05, temp=0.3)
-            coeff = "0.95" if case == "coeff" else "1.0"
-            lmp.commands_list(pre + ["pair_style morse/spline cut 1.3",
-                                     f"pair_coeff * * 1.0 6.0 {coeff}", "timestep 0.002",
-                                     "fix nve all nve", fix] + cmds +
-                              [f"thermo {thermo}", "run 200 post no"])
-            lmp.command("log none")
-            ids = np.array(lmp.gather_atoms("id", 0, 1))
-            order = np.argsort(ids)
-            runs[case] = (arrays(lmp, "v")[order], lmp.extract_fix("damp", 0, 0))
+            _, v, removed = damped_run(lmp, tmp_path / f"log.{case}", fix, thermo, units=units,
+                                       a_scale=a_scale, extra=extra)
+        runs[case] = (v, removed)
     for a, b in [("coeff", "adapt"), ("ramp1", "ramp200")]:
         (v1, e1), (v2, e2) = runs[a], runs[b]
         assert e1 > 0

@@ -427,6 +427,12 @@ row("adapt-a-back-up-after-reset-yes", MORSE,
      "variable k equal 1.0", "run 0 post no"], OK)
 row("adapt-C", MORSE, ["variable k equal 5", "fix a all adapt 1 pair morse/spline C * * v_k"],
     r"C of types 1 1 is the law's stiffness, derived from its parameters")
+for u, grown in [("metal", r"to 4\.0625 beyond 3\.25,"), ("si", r"to 1\.625e-05 beyond 1\.3e-05,")]:
+    a = UNIT_SCENES[u][1]
+    row(f"adapt-units-{u}-a-grows-past-list", unit_scene(u, "morse/spline"),
+        [f"variable k equal {1.25 * a!r}", "fix n all nve",
+         "fix a all adapt 1 pair morse/spline a * * v_k", "run 10 post no"],
+        "fix adapt moved the cutoff of types 1 1 " + grown)
 row("adapt-a-shrinks", MORSE, ["variable k equal 1.0-step*0.01", "fix n all nve",
                                "fix a all adapt 1 pair morse/spline a * * v_k",
                                "run 10 post no"], OK)
