@@ -730,7 +730,7 @@ void PairMCA::transfer_history(double *source, double *target, int, int)
 
 void *PairMCA::extract(const char *name, int &dim)
 {
-  dim = 0;
+  dim = -1;    // an object, not a parameter: fix adapt refuses dimensions other than 0 and 2
   if (strcmp(name, "pair_state") == 0) return (void *) &state;
   return nullptr;
 }

@@ -312,7 +312,7 @@ void PairSpline<Law>::born_matrix(int, int, int itype, int jtype, double rsq, do
 
 template <class Law> void *PairSpline<Law>::extract(const char *str, int &dim)
 {
-  dim = 0;
+  dim = -1;    // objects, not parameters: fix adapt refuses dimensions other than 0 and 2
   if (strcmp(str, "pair_state") == 0) return links.on() ? (void *) &state : nullptr;
   if (strcmp(str, "damping_pass") == 0)    // the kernel's DAMP modes: every pair to the end
     return !links.on() && !setting.chain_n ? (void *) &damping : nullptr;

@@ -433,6 +433,15 @@ for u, grown in [("metal", r"to 4\.0625 beyond 3\.25,"), ("si", r"to 1\.625e-05 
         [f"variable k equal {1.25 * a!r}", "fix n all nve",
          "fix a all adapt 1 pair morse/spline a * * v_k", "run 10 post no"],
         "fix adapt moved the cutoff of types 1 1 " + grown)
+# the styles' extract() also hands their state objects to this package's fixes and computes:
+# fix adapt must not write a number over them (it refuses the dimension; was a crash)
+OBJECT = r"Pair style parameter {} is not compatible with fix adapt"
+row("adapt-damping_pass", MORSE, ["variable k equal 1",
+                                   "fix a all adapt 1 pair morse/spline damping_pass * * v_k"],
+    OBJECT.format("damping_pass"), isolate=True)
+row("adapt-pair_state", MORSE_LINK, ["variable k equal 1",
+                                     "fix a all adapt 1 pair morse/spline pair_state * * v_k"],
+    OBJECT.format("pair_state"), isolate=True)
 row("adapt-a-shrinks", MORSE, ["variable k equal 1.0-step*0.01", "fix n all nve",
                                "fix a all adapt 1 pair morse/spline a * * v_k",
                                "run 10 post no"], OK)
@@ -708,6 +717,9 @@ for rid, cmds, expect in [
     ("mca-ok-negative-nu", [MP, "pair_coeff * * young 1 poisson -0.9"], OK),
 ]:
     row(rid, MCA, cmds, expect)
+row("adapt-mca-pair_state", MCA, [MP, MC, "variable k equal 1",
+                                  "fix a all adapt 1 pair mca pair_state * * v_k"],
+    OBJECT.format("pair_state"), isolate=True)
 row("mca-atomic-style", mca_box("atomic"), ["mass * 1.0", MP, MC], "requires atom_style sphere")
 row("mca-empty-box", MCA[:5] + ["create_box 2 box", "thermo_modify norm no"], [MP, MC], OK)
 row("mca-thin-periodic-box", mca_box(zlo=-0.5, zhi=0.5), [MP, MC], "periodic box is 1 wide")
