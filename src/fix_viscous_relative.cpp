@@ -52,7 +52,7 @@ using namespace ClusterDyn;
 FixViscousRelative::FixViscousRelative(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), opt(ViscousSettings::parse(lmp, narg, arg)), typepair(nullptr),
     coeff(nullptr), fused(0), fd(nullptr), maxfd(0),
-    removed(0.0), power_full(0.0), list(nullptr), state(nullptr)
+    removed(0.0), power_full(0.0), fd_step(-1), kick_step(-1), list(nullptr), state(nullptr)
 {
   scalar_flag = 1;
   global_freq = 1;
@@ -189,6 +189,7 @@ void FixViscousRelative::setup(int vflag)
   if (adapting) type_tables();    // fix adapt changed the pair at setup_pre_force
   check_stability();
   power_full = compute_forces(vflag);    // v(0): no kick before the first output
+  fd_step = update->ntimestep;
 }
 
 // offer the pair style's force pass fd, unless this step tallies the fix's virial
@@ -212,10 +213,12 @@ void FixViscousRelative::post_force(int vflag)
   pass.fd = nullptr;
   pass.filled = 0;
   removed -= 0.25 * update->dt * power_now;
+  fd_step = kick_step = update->ntimestep;
 }
 
 void FixViscousRelative::end_of_step()
 {
+  if (kick_step != update->ntimestep) return;    // rerun: end_of_step without a step
   power_full = power();
   removed -= 0.25 * update->dt * power_full;    // first half kick, v(k) side
 }
@@ -223,7 +226,11 @@ void FixViscousRelative::end_of_step()
 void FixViscousRelative::post_integrate()
 {
   // second half kick v(k) -> v(k+1/2) with the forces of step k; atoms have not moved
-  // between processors since then
+  // between processors since then, unless a run skipped its setup after a change
+  if (fd_step != update->ntimestep - 1)
+    error->all(FLERR, "Fix viscous/relative: no damping forces of step {} for its second half "
+               "kick: run ... pre no after a minimization or another change between runs (use "
+               "pre yes)", update->ntimestep - 1);
   removed -= 0.25 * update->dt * (power_full + power());
 }
 

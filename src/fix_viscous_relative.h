@@ -47,6 +47,8 @@ namespace ClusterDyn {
     int maxfd;
     double removed;          // energy removed by this proc's kicks
     double power_full;       // sum of fd . v at the last full step (trapezoid rule)
+    bigint fd_step;          // the step whose damping forces fd holds (-1: none)
+    bigint kick_step;        // the last step with post_force (rerun calls end_of_step alone)
     class NeighList *list;   // our own, without link L
     class PairState *state;  // the pair style's link state (link L): damp the linked pairs
     struct Bonds {

@@ -59,8 +59,7 @@ template <class Law> void PairSpline<Law>::compute(int eflag, int vflag)
   ev_init(eflag, vflag);
   const StatePass pass = start_compute();
   StateTally changes;
-  // fix viscous/relative's damping in this pass: offered, and no tallies this step
-  DampingPass *const fused = damping && damping->fd && !evflag ? damping : nullptr;
+  DampingPass *const fused = damping_this_step();    // fix viscous/relative's
   dispatch(eflag, fused, [&](auto t, auto mode, auto ev, auto e, auto n, auto d) {
     spline_kernel<Law, decltype(t), decltype(mode)::value, decltype(ev)::value,
                   decltype(e)::value, decltype(n)::value, decltype(d)::value>(

@@ -74,6 +74,13 @@ namespace ClusterDyn {
       return {table.coeffs, links.coeff.data(), links.making(), setting.chain_n,
               chain_scale.data(), fused};
     }
+    // fix viscous/relative's pass on this step: offered, no tallies, and a kernel mode that damps
+    // (dispatch: PLAIN and KAPPA; the slot outlives a pair_style line that sets chain or link)
+    DampingPass *damping_this_step() const
+    {
+      return damping && damping->fd && !evflag && !links.on() && !setting.chain_n ? damping
+                                                                                   : nullptr;
+    }
     StatePass start_compute() { return links.on() ? state.begin() : StatePass(); }
     void finish_compute(const StateTally &changes);
     [[noreturn]] void singular_error(int i, int j, double rsq) const;

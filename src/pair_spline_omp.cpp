@@ -34,9 +34,7 @@ template <class Law> void PairSplineOMP<Law>::compute(int eflag, int vflag)
   const StatePass pass = this->start_compute();
   std::exception_ptr failure;    // an error of a thread, raised after the parallel region
   StateTally changes;
-  // fix viscous/relative's damping in this pass: offered, and no tallies this step
-  DampingPass *const fused =
-      this->damping && this->damping->fd && !this->evflag ? this->damping : nullptr;
+  DampingPass *const fused = this->damping_this_step();    // fix viscous/relative's
   if (fused) damping_threads.reserve(nthreads, nall);
 
 #if defined(_OPENMP)

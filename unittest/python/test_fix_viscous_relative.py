@@ -528,3 +528,42 @@ def test_under_a_hybrid_style_and_fix_adapt_the_fixed_cutoffs_are_a_warning(tmp_
                 "is the hybrid's cutoffs" in text) == warned
         assert ("WARNING: Compute dust: under pair_style hybrid/overlay the bond distances are "
                 "the hybrid's cutoffs" in text) == warned
+
+
+def test_a_pair_style_line_that_sets_chain_between_runs_leaves_the_damping_to_the_fix(tmp_path):
+    """Re-issuing the style with chain N keeps the pair style (and its pass slot) without a new
+    init when the run says pre no: the chain kernel does not damp, so the fix's own loop must
+    (thermo 1 and thermo 20 give the same run; was: the damping lost on the fused steps)."""
+    runs = {}
+    for thermo in (1, 20):
+        with session() as lmp:
+            fcc_block(lmp, noise=0.05, temp=0.3)
+            lmp.commands_list(["pair_style morse/spline cut 1.3", "pair_coeff * * 1.0 6.0 1.0",
+                               "timestep 0.002", "fix nve all nve",
+                               "fix damp all viscous/relative J 20", f"thermo {thermo}",
+                               "run 50 post no", "pair_style morse/spline cut 1.3 chain 1",
+                               "pair_coeff * * 1.0 6.0 1.0", "run 20 pre no post no"])
+            ids = np.array(lmp.gather_atoms("id", 0, 1))
+            runs[thermo] = (arrays(lmp, "v")[np.argsort(ids)], lmp.extract_fix("damp", 0, 0))
+    (v1, e1), (v2, e2) = runs[1], runs[20]
+    assert e2 == pytest.approx(e1, rel=1e-10)
+    assert np.max(np.abs(v2 - v1)) <= 1e-10 * np.max(np.abs(v1))
+
+
+def test_rerun_removes_no_energy(tmp_path):
+    """rerun evaluates forces on stored snapshots and calls end_of_step, but integrates
+    nothing: the energy the fix reports removed stays 0."""
+    dump = tmp_path / "dump.snapshots"
+    with session() as lmp:
+        fcc_block(lmp, noise=0.05, temp=0.3)
+        lmp.commands_list(["pair_style morse/spline cut 1.3", "pair_coeff * * 1.0 6.0 1.0",
+                           "timestep 0.002", "fix nve all nve",
+                           f"dump d all custom 20 {dump} id type x y z vx vy vz",
+                           "run 100 post no", "undump d", "unfix nve",
+                           "fix damp all viscous/relative J 20", "thermo 20",
+                           "thermo_style custom step pe f_damp",
+                           f"rerun {dump} dump x y z vx vy vz"])
+        removed = lmp.extract_fix("damp", 0, 0)
+        nsnap = dump.read_text().count("ITEM: TIMESTEP")
+    assert nsnap == 6
+    assert removed == 0.0

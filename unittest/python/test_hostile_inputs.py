@@ -501,6 +501,11 @@ row("viscous-normal-overlap", dimer(r=0.0), ["pair_style zero 1.5", "pair_coeff 
                                              "velocity all create 0.1 4711", "fix n all nve",
                                              V + "gamma 1.0 mode normal cutoff 1.2",
                                              "run 5 post no"], OK)
+# LAMMPS: "it is an error to use pre no" after a change; the fix has no forces of the step
+# before to kick with (was a crash: fd never allocated)
+row("viscous-minimize-then-run-pre-no", MORSE,
+    ["fix n all nve", V + "J 50", "minimize 0 1e-8 20 40", "run 10 pre no"],
+    r"no damping forces of step \d+ for its second half kick: run \.\.\. pre no", isolate=True)
 for u in UNIT_SCENES:
     row(f"viscous-units-{u}", unit_scene(u, "morse/spline"), ["fix n all nve", V + "J 50",
                                                               "run 3 post no"], OK)
