@@ -28,11 +28,16 @@ namespace ClusterDyn {
     double strength = 0.0;    // sigma_c (0: the pair never unlinks)
     double damage = 0.0;      // sigma_d (0: type a)
 
-    // a pair of two materials takes the weaker element's strength and damage threshold
+    // a pair of two materials takes the weaker element's strength and damage threshold: the
+    // lower strength, at equal strengths the one that unlinks first (the lower peak); the same
+    // whichever element is i
     static McaResponse of_pair(double sc_i, double sd_i, double sc_j, double sd_j)
     {
-      if (sc_i > 0.0 && (sc_j == 0.0 || sc_i <= sc_j)) return {sc_i, sd_i};
-      return {sc_j, sd_j};
+      const McaResponse i{sc_i, sd_i}, j{sc_j, sd_j};
+      if (!i.active()) return j;
+      if (!j.active()) return i;
+      if (sc_i != sc_j) return sc_i < sc_j ? i : j;
+      return i.peak() <= j.peak() ? i : j;
     }
 
     bool active() const { return strength > 0.0; }

@@ -42,8 +42,10 @@ namespace ClusterDyn {
         const char *val = arg[i + 1];
         if (key == "fraction") {
           s.fraction = positive_arg(who, "fraction", val, lmp);
-          if (s.fraction > 1.0)
-            lmp->error->all(FLERR, "{}: fraction (the packing fraction) must be in (0, 1] "
+          // below 0.05 no packing of spheres stands (random loose 0.55, diamond 0.34), and an
+          // element's volume of 1e100 spheres' overflows its many-body terms
+          if (s.fraction > 1.0 || s.fraction < 0.05)
+            lmp->error->all(FLERR, "{}: fraction (the packing fraction) must be in [0.05, 1] "
                             "(got {})", who, val);
         } else if (key == "tolerance") {
           s.tolerance = number_arg(who, "tolerance", val, lmp);

@@ -742,3 +742,28 @@ def test_fcc_bar_in_tension_peaks_at_the_strength(tmp_path):
         broken = lmp.extract_compute("pp", LMP_STYLE_GLOBAL, LMP_TYPE_VECTOR)[0]
     peak = np.loadtxt(tmp_path / "sigma.txt")[:, 1].max()
     assert peak == pytest.approx(0.01, rel=0.05) and broken > 100, (peak, broken)
+
+
+def test_two_materials_of_equal_strength_take_the_one_that_unlinks_first_in_either_order():
+    """Equal strengths, damage thresholds 0.003 and 0.009 (peaks 0.017 and 0.011): the pair
+    takes 0.009's response whichever element comes first (was: element i's), the force of a
+    dimer of that material alone."""
+    def force_on_first(types, coeffs):
+        with session() as lmp:
+            lmp.commands_list([
+                "units lj", "atom_style sphere", "atom_modify map array", "boundary f f f",
+                "comm_modify vel yes", "region box block -5 5 -5 5 -5 5", "create_box 2 box",
+                f"create_atoms {types[0]} single -0.5 0 0", f"create_atoms {types[1]} single 0.5 0 0",
+                "set group all diameter 1.0", "set group all density 1.0", "neighbor 0.1 bin",
+                "pair_style mca fraction 0.6 tolerance 0.01", *coeffs, "run 0 post no",
+                "group two id 2", "displace_atoms two move 0.0024 0 0", "run 0 post no",
+                "run 0 post no"])    # the second sees the damage the first one recorded
+            return lmp.numpy.extract_atom("f")[0, 0]
+    mixed = ["pair_coeff 1 1 young 1.0 poisson 0.3 strength 0.01 damage 0.003",
+             "pair_coeff 2 2 young 1.0 poisson 0.3 strength 0.01 damage 0.009"]
+    alone = ["pair_coeff * * young 1.0 poisson 0.3 strength 0.01 damage 0.009"]
+    f12, f21, f9 = force_on_first((1, 2), mixed), force_on_first((2, 1), mixed), force_on_first((1, 1), alone)
+    assert f12 > 0
+    assert f12 == pytest.approx(f9, rel=1e-12) and f21 == pytest.approx(f9, rel=1e-12)
+    # the other threshold damages this stretch: the choice matters
+    assert force_on_first((1, 1), [alone[0].replace("0.009", "0.003")]) < 0.95 * f9
