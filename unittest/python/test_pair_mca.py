@@ -421,7 +421,8 @@ def test_bad_input(before, coeff, message):
 
 @pytest.mark.parametrize("args,message", [
     ("", "fraction F is required"), ("fraction 0", "fraction must be > 0"),
-    ("fraction 1.5", "must be in (0, 1]"), ("fraction 0.6 tolerance -0.1", "tolerance must be in"),
+    ("fraction 1.5", r"must be in \[0\.05, 1\]"), ("fraction 0.01", r"must be in \[0\.05, 1\]"),
+    ("fraction 0.6 tolerance -0.1", "tolerance must be in"),
     ("fraction 0.6 manybody maybe", "manybody must be yes or no"),
     ("fraction 0.6 cut 2", "unknown keyword"),
     ("fraction 0.6 tolerance", "tolerance needs a value")])
