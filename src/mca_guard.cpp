@@ -7,12 +7,10 @@
 
 #include "atom.h"
 #include "comm.h"
-#include "domain.h"
 #include "error.h"
 #include "fix.h"
 #include "force.h"
 #include "modify.h"
-#include "neighbor.h"
 #include "update.h"
 
 #include <cmath>
@@ -48,22 +46,6 @@ void McaGuard::init()
   if (anybad)
     error->all(FLERR, "Pair mca: element {} has radius <= 0 (elements need a positive "
                "diameter: set diameter)", anybad);
-}
-
-void McaGuard::at_list_build() const
-{
-  const double reach = neighbor->cutneighmax;
-  const double *h_inv = domain->h_inv;
-  const double width[3] = {
-      domain->triclinic ? 1.0 / sqrt(h_inv[0] * h_inv[0] + h_inv[5] * h_inv[5] +
-                                     h_inv[4] * h_inv[4]) : domain->xprd,
-      domain->triclinic ? 1.0 / sqrt(h_inv[1] * h_inv[1] + h_inv[3] * h_inv[3]) : domain->yprd,
-      domain->triclinic ? 1.0 / h_inv[2] : domain->zprd};
-  for (int k = 0; k < 3; k++)
-    if (domain->periodicity[k] && width[k] <= 2.0 * reach)
-      error->all(FLERR, "Pair mca: the periodic box is {:.6g} wide along {}, not more than twice "
-                 "the neighbour list's reach {:.6g}: one element would meet another through two "
-                 "images; use a larger box (replicate)", width[k], "xyz"[k], reach);
 }
 
 void McaGuard::each_step() const

@@ -1,10 +1,9 @@
 /* -*- c++ -*- ----------------------------------------------------------
-   Cluster-dynamics plugin for LAMMPS: what pair_style mca checks about the
-   elements and the box, and the element sizes its cutoffs are made from.
+   Cluster-dynamics plugin for LAMMPS: what pair_style mca checks about its
+   elements, and the element sizes its cutoffs are made from (the box: the
+   pair state, periodic_images.h).
      init():          every element has a positive radius; the largest radius
                       per type (elements present, fix pour, fix deposit)
-     at_list_build(): a periodic box wider than twice the list's reach (two
-                      images of one partner would share one pair state)
      each_step():     no element grown beyond those radii (fix adapt)
      at_setup():      the time step against the time a longitudinal wave takes
                       to cross the smallest element (a warning)
@@ -26,7 +25,6 @@ namespace ClusterDyn {
     McaGuard(LAMMPS *lmp) : Pointers(lmp) {}
     void init();
     double largest_radius(int type) const { return rmax[type]; }
-    void at_list_build() const;
     void each_step() const;
     // materials in energy/volume; element volume = sphere volume / fraction
     void at_setup(const std::vector<McaMaterial> &scaled, double fraction) const;

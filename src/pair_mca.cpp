@@ -114,7 +114,6 @@ void PairMCA::compute(int eflag, int vflag)
   ev_init(eflag, vflag);
   const StatePass pass = state.begin();
   grow(atom->nlocal + atom->nghost);
-  if (neighbor->ago == 0) guard.at_list_build();
   guard.each_step();
   if (pass.fresh) make_links(pass);
   if (update->setupflag && update->whichflag == 1) guard.at_setup(scaled, setting.fraction);

@@ -5,10 +5,13 @@
 #include "pair_state.h"
 
 #include "fix_pair_state.h"
+#include "periodic_images.h"
 
 #include "atom.h"
 #include "comm.h"
 #include "error.h"
+#include "fix.h"
+#include "force.h"
 #include "modify.h"
 #include "neigh_list.h"
 #include "output.h"
@@ -115,7 +118,27 @@ void PairState::init()
     afresh = 0;
   }
   check_fix();
+  check_neighbours();
   consolidate();
+}
+
+// what the state fix (FixNeighHistory's scheme) needs from the commands around it
+void PairState::check_neighbours() const
+{
+  // the ghosts' states go home by a variable-size reverse comm, which comm_style tiled lacks
+  if (comm->style == Comm::TILED && force->newton_pair)
+    error->all(FLERR, "{}: the link state needs newton off under comm_style tiled (LAMMPS's "
+               "tiled communication cannot return it to the owners with newton on)", name);
+  // the states are saved by neighbour-list index at pre_exchange: a fix that adds or deletes
+  // atoms there must come after the state fix, which stands where pair_style was given
+  const int me = modify->find_fix(FIX_ID);
+  for (int k = 0; k < me; k++) {
+    const Fix *f = modify->get_fix_by_index(k);
+    for (const char *style : {"deposit", "evaporate", "pour", "gcmc"})
+      if (strcmp(f->style, style) == 0)
+        error->all(FLERR, "{}: fix {} ({}) adds or deletes atoms before the link state is saved: "
+                   "define it after the pair_style command", name, f->id, f->style);
+  }
 }
 
 void PairState::check_fix() const
@@ -129,6 +152,7 @@ void PairState::check_fix() const
 
 StatePass PairState::begin()
 {
+  if (neighbor->ago == 0) check_single_images(lmp, name);    // the box may have changed
   trial_now = update->whichflag == 2 && !update->setupflag;
   if (trial_now && pending_step != update->ntimestep) accept();    // a new minimizer step
   pending_step = update->ntimestep;

@@ -136,6 +136,7 @@ namespace ClusterDyn {
     std::string placeholder() const;
     void add_placeholder();
     void check_fix() const;
+    void check_neighbours() const;
     void check_reserved_ids() const;
     void settle_words(bool accept_trial);    // words = state_now (accept) or bit 0 (drop)
     void consolidate();        // every processor's share onto processor 0

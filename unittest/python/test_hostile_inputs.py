@@ -380,6 +380,24 @@ row("run-delete-all-linked", MORSE_LINK, [
     "thermo_style custom step pe press c_n c_d[1] c_d[4]", NORM, "run 0 post no",
     "delete_atoms group all", "run 3 post no"], OK)
 
+# the link state is kept by partner ID: what it needs from the box and the commands around it
+row("link-thin-periodic-box", ["units lj", "region box block 0 2.25 -4 4 -4 4", "create_box 1 box",
+                               "mass 1 1.0", "create_atoms 1 single 0.2 0 0 units box",
+                               "create_atoms 1 single 1.2 0 0 units box", "neighbor 0.3 bin"]
+    + pair("morse/spline", "cut 1.3 link 1.05"),
+    [], r"the periodic box is 2\.25 wide along x, not more than twice")
+row("link-tiled-newton-on", MORSE_LINK, ["comm_style tiled"],
+    r"the link state needs newton off under comm_style tiled")
+row("link-tiled-newton-off", dimer() + ["newton off on", "comm_style tiled"]
+    + pair("morse/spline", "cut 1.3 link 1.1"), ["fix n all nve", "run 5 post no"], OK)
+row("link-evaporate-before-pair-style", dimer() + [
+    "region r block INF INF INF INF INF INF", "fix ev all evaporate 1 1 r 4711"]
+    + pair("morse/spline", "cut 1.3 link 1.1"), ["fix n all nve"],
+    r"fix ev \(evaporate\) adds or deletes atoms before the link state")
+row("link-evaporate-after-pair-style", MORSE_LINK, [
+    "region r block INF INF INF INF INF INF", "fix ev all evaporate 1 1 r 4711", "fix n all nve",
+    "run 3 post no"], OK)
+
 # fix adapt reaches the law's parameters past pair_coeff's checks: each change is checked
 # again when the pair style takes it (its error names the type pair and the values)
 NEED = r"types 1 1 need D, a, kappa > 0"
