@@ -93,7 +93,7 @@ void FixPairState::min_pre_exchange()
 
 void FixPairState::post_run()
 {
-  if (owner) owner->accept();
+  if (owner) owner->run_ended();
   save();
   nds_current = 0;    // commands between runs may move, delete or renumber atoms
 }

@@ -242,8 +242,14 @@ void PairState::consolidate()
   total = comm->me == 0 ? tally_from(all, nwork) : StateTally();
 }
 
+// processor 0, for the pair style's restart section
 void PairState::write_restart(FILE *fp)
 {
+  // read_restart, then write_restart noinit: the states are still in the read file's atom
+  // data, restored into the state fix at the next setup; this file would lose them
+  if (made_flag && !fix)
+    error->one(FLERR, "{}: write_restart noinit before the link state read from a restart file "
+               "is restored (at a setup) would lose it: leave out noinit, or run 0 first", name);
   fwrite(&made_flag, sizeof(int), 1, fp);
   double sums[3 + StateTally::MAXWORK];
   tally_to(total, sums, nwork);

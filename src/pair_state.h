@@ -117,9 +117,15 @@ namespace ClusterDyn {
     void write_restart(FILE *);
     void read_restart(FILE *);
 
-    // called by the fix: a minimizer's step is accepted, or (before a save) settled
+    // called by the fix: a minimizer's step is accepted, or (before a save) settled; at the
+    // end of a run also the totals onto processor 0 (for a write_restart noinit)
     void accept();
     void settle_before_save();
+    void run_ended()
+    {
+      accept();
+      consolidate();
+    }
 
    private:
     Pair *pair;

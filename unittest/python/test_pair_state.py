@@ -71,6 +71,26 @@ def test_write_restart_right_after_a_run_keeps_links_and_a_split_run_equals_the_
     assert r["dpe"] == pytest.approx(s["spe"], rel=1e-9)
 
 
+def test_write_restart_noinit_keeps_the_totals_of_every_rank_and_refuses_unrestored_links(
+        tmp_path):
+    """write_restart noinit skips the init that gathers the broken-link totals onto processor
+    0: the end of the run gathers them (2 ranks: was processor 0's share only).  Right after a
+    read_restart the links are not yet restored: noinit then stops with an error (was: a file
+    without them, broken links back by distance)."""
+    hot = "velocity all create 2.0 4711 loop geom\nfix 1 all nve\ntimestep 0.002\n"
+    write = block() + hot + "run 200\n" + report("a") + "write_restart n.restart noinit\n"
+    read = f"plugin load {PLUGIN}\nread_restart n.restart\nneighbor 0.2 bin\n" \
+        + BLOCK.split("neighbor 0.2 bin\n")[1] + "run 0\n" + report("b")
+    r = results(run_lmp(tmp_path, write, 2))
+    r.update(results(run_lmp(tmp_path, read, 1, name="in.read")))
+    assert r["abroken"] > 0 and r["alinks"] < 12 * 256
+    assert r["bbroken"] == r["abroken"] and r["blinks"] == r["alinks"]
+    with session() as lmp:
+        lmp.commands_list([f"read_restart {tmp_path / 'n.restart'}", "neighbor 0.2 bin"])
+        with pytest.raises(Exception, match="write_restart noinit before the link state read"):
+            lmp.command(f"write_restart {tmp_path / 'again.restart'} noinit")
+
+
 @pytest.mark.parametrize("nprocs", [1, 2])
 @pytest.mark.parametrize("atom_map", ["atom_modify map array", ""])
 def test_links_follow_renumbered_ids_and_end_with_deleted_atoms(tmp_path, nprocs, atom_map):
@@ -431,3 +451,26 @@ def test_compute_dust_is_evaluated_again_after_the_atoms_changed(change):
             assert largest == lmp.get_natoms() < natoms and fragments == 1
         else:
             assert fragments == 2 and largest < natoms
+
+
+@pytest.mark.parametrize("between", [
+    "run 0",
+    pytest.param("", marks=pytest.mark.xfail(strict=True, reason="known: the new atom takes the "
+                                              "deleted atom's ID and links (doc/pair_spline.rst)"))])
+def test_an_atom_created_with_a_deleted_atoms_id_is_not_linked(between):
+    """Delete atom 2 of a linked dimer, create an atom that gets ID 2 again 1.15 a from atom 1
+    (beyond L a = 1.05): no link.  With a run 0 between the commands the setup forgets the
+    deleted partner; without it the new atom inherits the link (documented)."""
+    with session() as lmp:
+        lmp.commands_list([
+            "units lj", "atom_modify map array", "region box block -4 4 -4 4 -4 4",
+            "create_box 1 box", "mass 1 1.0", "create_atoms 1 single 0 0 0 units box",
+            "create_atoms 1 single 1.0 0 0 units box", "pair_style morse/spline cut 1.3 link 1.05",
+            "pair_coeff * * 1.0 6.0 1.0", "neighbor 0.3 bin", "compute l all links/atom",
+            "compute ls all reduce sum c_l", "run 0 post no", "group two id 2",
+            "delete_atoms group two", between, "create_atoms 1 single 0 1.15 0 units box",
+            "run 0 post no"])
+        links = lmp.numpy.extract_compute("ls", 0, 0)
+        ids = sorted(lmp.numpy.extract_atom("id")[:2])
+    assert ids == [1, 2]
+    assert links == 0
