@@ -52,7 +52,9 @@ void ComputeMcaAtom::compute_peratom()
   pair = dynamic_cast<PairMCA *>(force->pair_match("^mca$", 0, 0));    // may have changed
   if (!pair) error->all(FLERR, "Compute mca/atom needs pair_style mca");
   double **s = pair->element_stress();
-  if (!s)
+  int stale = !s, any = 0;    // on every processor: the same error everywhere
+  MPI_Allreduce(&stale, &any, 1, MPI_INT, MPI_MAX, world);
+  if (any)
     error->all(FLERR, "Compute mca/atom: the element stresses are not current (atoms added or "
                "removed, or no force evaluation since this compute was defined): run 0 first");
   const int *mask = atom->mask;

@@ -6,6 +6,7 @@
 #include "mca_plasticity.h"
 
 #include "atom.h"
+#include "fix.h"
 #include "modify.h"
 
 #include <cmath>
@@ -17,8 +18,12 @@ void McaPlasticity::init(const std::vector<McaMaterial> &materials)
 {
   for (const McaMaterial &m : materials)
     if (m.yield > 0.0) on = true;
-  if (on && !modify->get_fix_by_id(FIX_ID))
-    modify->add_fix(fmt::format("{} all property/atom d_{} ghost yes", FIX_ID, NAME));
+  if (on && !modify->get_fix_by_id(FIX_ID)) {
+    Fix *fix = modify->add_fix(fmt::format("{} all property/atom d_{} ghost yes", FIX_ID, NAME));
+    // as the pair states, the plastic strain stays out of data files (a plain read_data
+    // could not read its section back): elements read from one are fresh
+    fix->wd_section = 0;
+  }
 }
 
 double *McaPlasticity::strain_array() const

@@ -8,7 +8,7 @@
    (radial return).  The equivalent plastic strain eps_p of each element
    is a per-atom property (fix property/atom MCA_PLASTIC_STRAIN, created
    here as fix granular/mdr creates its own): it moves with its element and
-   goes into restart files.
+   goes into restart files, not into data files (as the pair states).
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_CLUSTERDYN_MCA_PLASTICITY_H

@@ -41,7 +41,7 @@ using C = McaContact;
 PairMCA::PairMCA(LAMMPS *lmp) :
     Pair(lmp), guard(lmp), plasticity(lmp), state(lmp, this, "Pair mca", C::NVALUES, NWORK),
     responds(0), sums(nullptr), stress(nullptr), returned(nullptr), dtheta(nullptr), nmax(0),
-    stress_wanted(0), stress_nlocal(-1), stress_step(-1), comm_what(COMM_SUMS)
+    stress_wanted(0), stress_step(-1), stress_atoms(0), comm_what(COMM_SUMS)
 {
   single_enable = 0;
   restartinfo = 1;
@@ -490,7 +490,7 @@ void PairMCA::pair_forces(const StatePass &pass, StateTally &changes)
 
   if (stress_wanted) {
     stress_step = update->ntimestep;
-    stress_nlocal = nlocal;
+    stress_atoms = atoms_fingerprint(atom);
     stress_to_owners(true);
   }
 }

@@ -17,6 +17,7 @@ PairStyle(mca,PairMCA);
 #define LMP_CLUSTERDYN_PAIR_MCA_H
 
 #include "atom.h"
+#include "atoms_fingerprint.h"
 #include "mca_contact.h"
 #include "mca_guard.h"
 #include "mca_material.h"
@@ -58,10 +59,12 @@ namespace ClusterDyn {
     // xx yy zz xy xz yz) and the count of linked pairs, from the last force evaluation
     enum { STRESS_COLUMNS = 7 };
     void request_element_stress() { stress_wanted = 1; }
-    // the element stresses of my atoms, or null unless they belong to the current atoms
+    // the element stresses of my atoms, or null unless they belong to the current atoms (this
+    // step, and the same atoms in the same slots)
     double **element_stress() const
     {
-      return stress_step == update->ntimestep && stress_nlocal == atom->nlocal ? stress : nullptr;
+      return stress_step == update->ntimestep && stress_atoms == atoms_fingerprint(atom) ? stress
+                                                                                      : nullptr;
     }
     double element_volume(int i) const;
     // the equivalent plastic strain of my elements, or null (no material yields)
@@ -88,8 +91,9 @@ namespace ClusterDyn {
     // per atom: the plastic factor phi and mean stress (plasticity); the changes of the
     // volumetric strain made by this step's changes of state, damage and plastic flow
     double **returned, **dtheta;
-    int nmax, stress_wanted, stress_nlocal;
+    int nmax, stress_wanted;
     bigint stress_step;
+    std::uint64_t stress_atoms;    // atoms_fingerprint() when the stresses were made
     enum CommWhat { COMM_SUMS, COMM_STRESS, COMM_RETURNED, COMM_DTHETA } comm_what;
 
     void allocate();

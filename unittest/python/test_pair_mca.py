@@ -346,6 +346,21 @@ def test_write_data_keeps_materials_relinks(tmp_path):
     assert float(row[1]) == 0.0 and float(row[2]) > 256 * 11
 
 
+def test_write_data_of_a_yielding_material_reads_back(tmp_path):
+    """A material with yield keeps its elements' plastic strain in a fix property/atom; like
+    the pair states it stays out of data files, so a plain read_data reads the file back (was:
+    "Unknown identifier in data file: MCA_PLASTIC_STRAIN")."""
+    head = f"plugin load {PLUGIN}\n" + HOT_BLOCK.format(newton="on", dt=0.02).replace(
+        "pair_coeff 1 1 young 1.0 poisson 0.4", "pair_coeff 1 1 young 1.0 poisson 0.4 yield 0.001")
+    run_lmp(tmp_path, head + "run 100\nwrite_data d.data\nwrite_restart d.restart\n")
+    out = run_lmp(tmp_path, f"plugin load {PLUGIN}\nunits lj\natom_style sphere\n"
+                  "comm_modify vel yes\npair_style mca fraction 0.74 tolerance 0.02\n"
+                  "read_data d.data\nneighbor 0.2 bin\nrun 0\n", name="in.read")
+    text = (tmp_path / "d.data").read_text()
+    assert "yield 0.001" in text and "MCA_PLASTIC_STRAIN" not in text
+    assert "Loop time" in out
+
+
 def test_rigid_rotation_keeps_stresses():
     """A strained block turned a quarter of a turn by fix move rotate (positions, velocities
     and spins): each element's stress is the rotated stress of the start, to 1e-8 (the
@@ -573,6 +588,13 @@ def test_compute_follows_the_pair_style_and_the_atoms(tmp_path):
     with session() as lmp:
         lmp.commands_string(HOT_BLOCK.format(newton="on", dt=0.02))
         lmp.commands_list(["compute s all mca/atom", "run 0", "create_atoms 1 single 0.3 0.3 0.3"])
+        with pytest.raises(Exception, match="not current"):
+            lmp.command(f"write_dump all custom {tmp_path / 'd.txt'} id c_s[1]")
+    # one deleted, one created: the same count of atoms, not the same atoms (was: stale values)
+    with session() as lmp:
+        lmp.commands_string(HOT_BLOCK.format(newton="on", dt=0.02))
+        lmp.commands_list(["compute s all mca/atom", "run 0", "group one id 5",
+                           "delete_atoms group one", "create_atoms 1 single 0.3 0.3 0.3"])
         with pytest.raises(Exception, match="not current"):
             lmp.command(f"write_dump all custom {tmp_path / 'd.txt'} id c_s[1]")
     with session() as lmp:
