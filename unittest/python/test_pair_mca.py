@@ -792,44 +792,6 @@ def test_two_materials_of_equal_strength_take_the_one_that_unlinks_first_in_eith
     assert force_on_first((1, 1), [alone[0].replace("0.009", "0.003")]) < 0.95 * f9
 
 
-BAR = """plugin load {plugin}
-units lj
-atom_style sphere
-boundary s s s
-comm_modify vel yes
-lattice fcc $(sqrt(2.0))
-region box block 0 6 0 3 0 3
-create_box 1 box
-create_atoms 1 box
-reset_atoms id sort yes
-set group all diameter 1.0
-variable phi equal PI/sqrt(18.0)
-pair_style mca fraction ${{phi}} tolerance 0.02
-pair_coeff 1 1 young 1.0 poisson 0.3 {response}
-set group all density $(1.0/v_phi)
-neighbor 0.2 bin
-timestep 0.02
-fix move all nve/sphere
-velocity all ramp vx -0.03 0.03 x $(xlo) $(xhi) sum yes units box
-velocity all create 1.0e-6 4711 loop geom sum yes
-"""
-
-
-@pytest.mark.parametrize("response", [
-    "",
-    pytest.param("strength 0.01", marks=pytest.mark.xfail(strict=True, reason=(
-        "known (doc/pair_mca.rst): theta is summed before a step's changes of state, a setup "
-        "after them: a split run parts from the straight one by 3e-6")))])
-def test_a_run_split_in_two_equals_the_straight_run(tmp_path, response):
-    """A bar pulled apart, run 600 against run 300 + run 300: elastic, the same to round-off;
-    breaking, not (a known limitation, measured in the doc)."""
-    dump = ("write_dump all custom final.txt id x y z modify sort id format float %.17g\n")
-    head = BAR.format(plugin=PLUGIN, response=response)
-    run_lmp(tmp_path, head + "run 600\n" + dump, name="in.straight")
-    straight = positions(tmp_path)
-    run_lmp(tmp_path, head + "run 300\nrun 300\n" + dump, name="in.split")
-    assert np.abs(positions(tmp_path) - straight).max() <= 1e-12
-
 
 @pytest.mark.xfail(strict=True, reason="known (doc/pair_mca.rst): the contact of a link broken "
                    "while its elements overlap pushes them apart")
