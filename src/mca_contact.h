@@ -41,11 +41,6 @@ namespace ClusterDyn {
 
     static double half_stiffness(double shear, double radius) { return 2.0 * shear / radius; }
 
-    // the strength of a pair: the weaker element's (0: that element's links never break)
-    static double pair_strength(double si, double sj)
-    {
-      return si > 0.0 && sj > 0.0 ? (si < sj ? si : sj) : (si > 0.0 ? si : sj);
-    }
     static double series(double ai, double aj) { return ai * aj / (ai + aj); }
 
     // the moment of a link (the review's K_ij) from the relative rotation rot of j against i:
