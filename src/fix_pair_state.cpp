@@ -148,9 +148,12 @@ void FixPairState::relabel_partners()
 {
   const int nlocal = atom->nlocal;
   const tagint *tag = atom->tag;
+  // an atom renumbered since the save, or one created since (saved ID 0): it may hold the ID
+  // of an atom deleted since, to which saved partners still point (delete_atoms, then
+  // create_atoms, gives the freed highest IDs out again)
   int changed = 0, any;
   for (int i = 0; i < nlocal && !changed; i++)
-    if (npartner[i] && saved_id[i] != tag[i]) changed = 1;
+    if ((npartner[i] && saved_id[i] != tag[i]) || !saved_id[i]) changed = 1;
   MPI_Allreduce(&changed, &any, 1, MPI_INT, MPI_MAX, world);
   if (!any) return;
 

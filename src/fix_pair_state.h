@@ -14,8 +14,10 @@
      build inside a run);
    - each atom carries the ID it had when its partners were saved: after
      reset_atoms id or delete_atoms compress yes the partners are relabelled
-     to the new IDs; an atom created since (saved ID 0) is "fresh": its
-     pairs are made at the next setup;
+     to the new IDs, and a partner whose saved ID no atom carries any more is
+     dropped, also when an atom created since holds that ID now; an atom
+     created since (saved ID 0) is "fresh": its pairs are made at the next
+     setup;
    - after each list build the saved links are counted against the list: a
      link whose partner no longer exists ended with its atom (logged), a
      link missing from the list while both atoms exist is an error;

@@ -453,14 +453,11 @@ def test_compute_dust_is_evaluated_again_after_the_atoms_changed(change):
             assert fragments == 2 and largest < natoms
 
 
-@pytest.mark.parametrize("between", [
-    "run 0",
-    pytest.param("", marks=pytest.mark.xfail(strict=True, reason="known: the new atom takes the "
-                                              "deleted atom's ID and links (doc/pair_spline.rst)"))])
+@pytest.mark.parametrize("between", ["run 0", ""])
 def test_an_atom_created_with_a_deleted_atoms_id_is_not_linked(between):
     """Delete atom 2 of a linked dimer, create an atom that gets ID 2 again 1.15 a from atom 1
-    (beyond L a = 1.05): no link.  With a run 0 between the commands the setup forgets the
-    deleted partner; without it the new atom inherits the link (documented)."""
+    (beyond L a = 1.05): no link, with or without a run between the commands (was, without:
+    the new atom inherited the deleted atom's link)."""
     with session() as lmp:
         lmp.commands_list([
             "units lj", "atom_modify map array", "region box block -4 4 -4 4 -4 4",
