@@ -50,8 +50,8 @@ using namespace FixConst;
 using namespace ClusterDyn;
 
 FixViscousRelative::FixViscousRelative(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), opt(ViscousSettings::parse(lmp, narg, arg)), typepair(nullptr),
-    coeff(nullptr), fused(0), fd(nullptr), maxfd(0),
+    Fix(lmp, narg, arg), opt(ViscousSettings::parse(lmp, narg, arg)), types(lmp, opt), fused(0),
+    fd(nullptr), maxfd(0),
     removed(0.0), power_full(0.0), fd_step(-1), kick_step(-1), list(nullptr), state(nullptr)
 {
   scalar_flag = 1;
@@ -61,11 +61,9 @@ FixViscousRelative::FixViscousRelative(LAMMPS *lmp, int narg, char **arg) :
   virial_global_flag = 1;
   restart_global = 1;
   comm_reverse = 3;
-  typepair = new TypePair[(atom->ntypes + 1) * (atom->ntypes + 1)]();
-  coeff = new DampingCoeff[(atom->ntypes + 1) * (atom->ntypes + 1)]();
   pass.normal = opt.normal;
   pass.dpd = opt.dpd;
-  pass.coeff = coeff;
+  pass.coeff = types.coeffs();
 }
 
 FixViscousRelative::~FixViscousRelative()
@@ -76,8 +74,6 @@ FixViscousRelative::~FixViscousRelative()
     auto slot = (DampingPass **) force->pair->extract("damping_pass", dim);
     if (slot && *slot == &pass) *slot = nullptr;
   }
-  delete[] typepair;
-  delete[] coeff;
   memory->destroy(fd);
 }
 
@@ -116,7 +112,7 @@ void FixViscousRelative::init()
     error->warning(FLERR, "Fix viscous/relative: under pair_style {} the damping range is the "
                    "hybrid's cutoffs as the run starts; fix adapt changing a sub-style's cutoffs "
                    "does not move it (give the cutoff keyword)", force->pair_style);
-  type_tables();
+  types.fill();
   fused = adapting ? 0 : claim_pass();
   pass.fd = nullptr;
 
@@ -140,24 +136,6 @@ void FixViscousRelative::init()
                  "range {}: raise it with comm_modify cutoff", opt.cutoff, skin, cutghost);
     req->set_cutoff(opt.cutoff + skin);
   }
-}
-
-// per type pair: the damping range (the pair style's cutoffs, or the cutoff keyword), the
-// stiffness C (J style) and the pass's coefficients
-void FixViscousRelative::type_tables()
-{
-  int dim = 0;
-  double **stiffness = opt.by_j ? (double **) force->pair->extract("C", dim) : nullptr;
-  const int ntypes = atom->ntypes;
-  for (int i = 1; i <= ntypes; i++)
-    for (int j = 1; j <= ntypes; j++) {
-      TypePair &tp = typepair[i * (ntypes + 1) + j];
-      tp.cutsq = opt.cutoff > 0.0 ? opt.cutoff * opt.cutoff : force->pair->cutsq[i][j];
-      tp.stiffness = opt.by_j ? stiffness[i][j] : 0.0;
-      DampingCoeff &c = coeff[i * (ntypes + 1) + j];
-      c.inv_cut = tp.cutsq > 0.0 ? 1.0 / sqrt(tp.cutsq) : 0.0;
-      c.coef = atom->rmass ? 0.0 : friction(tp, atom->mass[i], atom->mass[j]);
-    }
 }
 
 void FixViscousRelative::init_list(int, NeighList *ptr)
@@ -186,7 +164,7 @@ int FixViscousRelative::claim_pass()
 
 void FixViscousRelative::setup(int vflag)
 {
-  if (adapting) type_tables();    // fix adapt changed the pair at setup_pre_force
+  if (adapting) types.fill();    // fix adapt changed the pair at setup_pre_force
   check_stability();
   power_full = compute_forces(vflag);    // v(0): no kick before the first output
   fd_step = update->ntimestep;
@@ -234,17 +212,6 @@ void FixViscousRelative::post_integrate()
   removed -= 0.25 * update->dt * (power_full + power());
 }
 
-double FixViscousRelative::rate(const TypePair &tp, double mij) const
-{
-  return opt.rate(tp.stiffness, mij, force->ftm2v);
-}
-
-double FixViscousRelative::friction(const TypePair &tp, double mi, double mj) const
-{
-  const double mij = 2.0 * mi * mj / (mi + mj);
-  return mij * rate(tp, mij) / force->ftm2v;
-}
-
 double FixViscousRelative::power() const
 {
   const double *const *const v = atom->v;
@@ -268,7 +235,7 @@ void FixViscousRelative::clear_fd()
 
 double FixViscousRelative::compute_forces(int vflag)
 {
-  if (adapting) type_tables();
+  if (adapting) types.fill();
   v_init(vflag);
   clear_fd();
 
@@ -325,15 +292,14 @@ void FixViscousRelative::damp(const Bonds &bonds)
   const double *_noalias const rmass = atom->rmass;
   const int nlocal = atom->nlocal;
   const int newton_pair = force->newton_pair;
-  const int ntp1 = atom->ntypes + 1;
   const NeighList *const list = bonds.list;
   const int inum = list->inum;
 
   for (int ii = 0; ii < inum; ii++) {
     const int i = list->ilist[ii];
     if (GENERAL && !(mask[i] & groupbit)) continue;
-    const TypePair *tpi = typepair + type[i] * ntp1;
-    const DampingCoeff *ci = coeff + type[i] * ntp1;
+    const DampingTypes::TypePair *tpi = types.row(type[i]);
+    const DampingCoeff *ci = types.coeff_row(type[i]);
     const double xtmp = x[i].x, ytmp = x[i].y, ztmp = x[i].z;
     const double vxtmp = v[i].x, vytmp = v[i].y, vztmp = v[i].z;
     double fxtmp = 0.0, fytmp = 0.0, fztmp = 0.0;
@@ -345,12 +311,12 @@ void FixViscousRelative::damp(const Bonds &bonds)
       const double dely = ytmp - x[j].y;
       const double delz = ztmp - x[j].z;
       const double rsq = delx * delx + dely * dely + delz * delz;
-      const TypePair &tp = tpi[type[j]];
+      const DampingTypes::TypePair &tp = tpi[type[j]];
       if (rsq >= tp.cutsq || (GENERAL && !(mask[j] & groupbit))) continue;
       if (LINKED && !state_now(bonds.words[i][jj])) continue;
 
       const DampingCoeff &c = ci[type[j]];
-      const double coef = GENERAL && rmass ? friction(tp, rmass[i], rmass[j]) : c.coef;
+      const double coef = GENERAL && rmass ? types.friction(tp, rmass[i], rmass[j]) : c.coef;
       double fx, fy, fz;
       damping_force<NORMAL, DPD>(coef, c.inv_cut, rsq, tp.cutsq, vxtmp - v[j].x, vytmp - v[j].y,
                                  vztmp - v[j].z, delx, dely, delz, fx, fy, fz);
@@ -396,14 +362,14 @@ void FixViscousRelative::check_stability()
       const int j = list->firstneigh[i][jj] & NEIGHMASK;
       if (!(mask[j] & groupbit)) continue;
       const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
-      const TypePair &tp = typepair[type[i] * (atom->ntypes + 1) + type[j]];
+      const DampingTypes::TypePair &tp = types.row(type[i])[type[j]];
       if (dx * dx + dy * dy + dz * dz >= tp.cutsq) continue;
       if (bonds.words && !state_now(bonds.words[i][jj])) continue;
       fd[i][0] += 1.0;
       if (force->newton_pair || j < nlocal) fd[j][0] += 1.0;
       const double mi = atom->rmass ? atom->rmass[i] : atom->mass[type[i]];
       const double mj = atom->rmass ? atom->rmass[j] : atom->mass[type[j]];
-      rate_max = MAX(rate_max, rate(tp, 2.0 * mi * mj / (mi + mj)));
+      rate_max = MAX(rate_max, types.rate(tp, 2.0 * mi * mj / (mi + mj)));
     }
   }
   if (force->newton_pair) comm->reverse_comm(this);
@@ -473,6 +439,5 @@ void FixViscousRelative::unpack_reverse_comm(int n, int *list_, double *buf)
 
 double FixViscousRelative::memory_usage()
 {
-  return (double) maxfd * 3 * sizeof(double) +
-      (double) (atom->ntypes + 1) * (atom->ntypes + 1) * (sizeof(TypePair) + sizeof(DampingCoeff));
+  return (double) maxfd * 3 * sizeof(double) + types.memory_usage();
 }

@@ -7,6 +7,7 @@
 #define LMP_CLUSTERDYN_FIX_VISCOUS_RELATIVE_H
 
 #include "damping_pass.h"
+#include "damping_types.h"
 #include "fix.h"
 #include "viscous_settings.h"
 
@@ -34,12 +35,7 @@ namespace ClusterDyn {
 
    private:
     ViscousSettings opt;     // the fix's arguments
-    struct TypePair {
-      double cutsq;          // damping range, squared
-      double stiffness;      // C_ij from the pair style (J style)
-    };
-    TypePair *typepair;      // (ntypes+1)^2
-    DampingCoeff *coeff;     // (ntypes+1)^2: m_ij G_ij / ftm2v (per-type masses), 1 / range
+    DampingTypes types;      // per type pair: range, C, the pass's coefficients
     DampingPass pass;        // the damping in the pair style's force pass (damping_pass.h)
     int fused;               // this run: the pair style took the pass
     int adapting;            // this run has a fix adapt: the tables read before each loop
@@ -57,14 +53,11 @@ namespace ClusterDyn {
     };
     Bonds current_bonds() const;
 
-    void type_tables();
     void clear_fd();
     int claim_pass();                    // at init: whether the pair style takes the pass
     double compute_forces(int vflag);    // returns the power sum of my atoms
     double add_forces();                 // fd's ghost parts to owners, fd into f; the power
     template <int NORMAL, int DPD, int GENERAL, int LINKED> void damp(const Bonds &bonds);
-    double rate(const TypePair &tp, double mij) const;    // G_ij (1/time)
-    double friction(const TypePair &tp, double mi, double mj) const;    // m_ij G_ij / ftm2v
     double power() const;    // sum over my atoms of fd . v
     void check_stability();
   };
