@@ -7,8 +7,13 @@
    for the front) sets the face; the atoms within `depth` of it give the
    mass-weighted mean velocity along the axis.  After a spall the rear face
    is that of the spalled layer (its large fragment lies outermost), as a
-   VISAR sees it.  Two reductions over the processors (the face, then the
-   layer's momentum, mass and count).
+   VISAR sees it.  With minsize N the body's pieces are the fragments of at
+   least N atoms (the dust flags are not read).  A face that lies more than
+   `depth` from where the last evaluation's face and velocity put it counts
+   as a jump (a piece of the body counted as dust for a while, or one that
+   came back): the fourth output, for tools/pull_back.py to refuse such a
+   record.  Two reductions over the processors (the face, then the layer's
+   momentum, mass and count).
 ------------------------------------------------------------------------- */
 
 #include "compute_free_surface.h"
@@ -34,16 +39,19 @@ ComputeFreeSurface::ComputeFreeSurface(LAMMPS *lmp, int narg, char **arg) :
 {
   if (narg < 5)
     error->all(FLERR, "{}: expected compute ID group free/surface dust-ID depth "
-               "[axis x|y|z] [face rear|front]", WHO);
+               "[axis x|y|z] [face rear|front] [minsize N]", WHO);
   dust_id = arg[3];
   depth = positive_arg(WHO, "depth", arg[4], lmp);
   for (int i = 5; i < narg; i += 2) {
     const std::string key = arg[i];
-    if (key != "axis" && key != "face")
-      error->all(FLERR, "{}: unknown keyword '{}' (axis, face)", WHO, key);
+    if (key != "axis" && key != "face" && key != "minsize")
+      error->all(FLERR, "{}: unknown keyword '{}' (axis, face, minsize)", WHO, key);
     if (i + 1 >= narg) error->all(FLERR, "{}: {} needs a value", WHO, key);
     const std::string val = arg[i + 1];
-    if (key == "axis") {
+    if (key == "minsize") {
+      minsize = integer_arg(WHO, "minsize", arg[i + 1], lmp);
+      if (minsize < 1) error->all(FLERR, "{}: minsize must be >= 1 (got {})", WHO, val);
+    } else if (key == "axis") {
       if (val != "x" && val != "y" && val != "z")
         error->all(FLERR, "{}: axis must be x, y or z (got '{}')", WHO, val);
       axis = val[0] - 'x';
@@ -54,7 +62,7 @@ ComputeFreeSurface::ComputeFreeSurface(LAMMPS *lmp, int narg, char **arg) :
     }
   }
   vector_flag = 1;
-  size_vector = 3;
+  size_vector = 4;
   extvector = 0;
   vector = new double[size_vector];
 }
@@ -81,7 +89,8 @@ void ComputeFreeSurface::compute_vector()
   const int *mask = atom->mask, *type = atom->type;
   const int nlocal = atom->nlocal;
   auto counted = [&](int i) {
-    return (mask[i] & groupbit) && fragment[i][1] > 0.0 && fragment[i][2] == 0.0;
+    if (!(mask[i] & groupbit) || !(fragment[i][1] > 0.0)) return false;
+    return minsize > 0 ? fragment[i][1] >= minsize : fragment[i][2] == 0.0;
   };
 
   double outer = -HUGE_VAL, outer_all;    // sign x of the outermost atom
@@ -101,4 +110,27 @@ void ComputeFreeSurface::compute_vector()
   vector[0] = all[1] > 0.0 ? all[0] / all[1] : 0.0;
   vector[1] = all[2] > 0.0 ? sign * outer_all : 0.0;
   vector[2] = all[2];
+  count_jump(all[2] > 0.0, outer_all, vector[0]);
+  vector[3] = jumps;
+}
+
+/* ----------------------------------------------------------------------
+   the face (outermost sign x) against where the last evaluation's face and
+   the mean of the two velocities put it: more than depth away, beyond what
+   a change of velocity at any time in between can explain (half the change
+   times the interval), or the face gone, is a jump.  A second evaluation
+   on the same step compares nothing.
+------------------------------------------------------------------------- */
+
+void ComputeFreeSurface::count_jump(bool found, double face, double velocity)
+{
+  if (update->ntimestep == last.step) return;
+  const double now = update->atime + (update->ntimestep - update->atimestep) * update->dt;
+  if (last.found) {
+    const double interval = now - last.time;
+    const double expected = last.face + sign * 0.5 * (last.velocity + velocity) * interval;
+    const double slack = depth + 0.5 * fabs(velocity - last.velocity) * fabs(interval);
+    if (!found || fabs(face - expected) > slack) jumps += 1.0;
+  }
+  last = {update->ntimestep, found, face, velocity, now};
 }

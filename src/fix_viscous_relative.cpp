@@ -25,6 +25,7 @@
 
 #include "fix_viscous_relative.h"
 
+#include "damping_masses.h"
 #include "pair_state.h"
 #include "xyz3.h"
 #include "skin_check.h"
@@ -92,6 +93,11 @@ void FixViscousRelative::init()
   if (!force->pair && opt.cutoff == 0.0)
     error->all(FLERR, "Fix viscous/relative needs a pair style (its cutoffs are the damping "
                "range) or the cutoff keyword");
+  // m_ij of a pair with a ghost atom needs the ghost's mass
+  const std::string ghostless = atom->rmass ? ghostless_rmass_fix(lmp) : "";
+  if (!ghostless.empty())
+    error->all(FLERR, "Fix viscous/relative: fix {} property/atom rmass needs ghost yes (the "
+               "damping of a pair with a ghost atom needs its mass)", ghostless);
   int dim = 0;
   state = force->pair ? (PairState *) force->pair->extract("pair_state", dim) : nullptr;
   if (state && opt.cutoff > 0.0)

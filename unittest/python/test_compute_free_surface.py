@@ -2,6 +2,7 @@
 quantity built from stock LAMMPS commands (atom-style variables and compute reduce) over a
 spall run, a closed form on a velocity ramp in two unit styles, serial against 2 ranks, and
 bad input."""
+import math
 import os
 
 import pytest
@@ -81,12 +82,88 @@ def test_velocity_ramp_closed_form(units):
     assert side[0] == 0.0 and side[2] == 80    # the planes y = 2a and 3a: 10 x 2 x 4 atoms
 
 
+def thermo_row(out):
+    return [float(x) for x in out.split("c_face[1]")[1].splitlines()[1].split()]
+
+
 def test_two_ranks_give_the_serial_values(tmp_path):
+    """The same numbers on 2 ranks (to round-off: the layer's sums are added in another
+    order), the counts exactly."""
     script = f"plugin load {PLUGIN}\n" + RAMP.format(units="lj", a=1.0, m=1.0, D=1.0,
                                                      alpha=3.76, skin=0.2, k=0.01, depth=1.5)
-    serial = run_lmp(tmp_path, script).split("c_face[1]")[1].splitlines()[1]
-    parallel = run_lmp(tmp_path, script, nprocs=2).split("c_face[1]")[1].splitlines()[1]
-    assert serial == parallel
+    serial = thermo_row(run_lmp(tmp_path, script))
+    parallel = thermo_row(run_lmp(tmp_path, script, nprocs=2))
+    assert len(serial) == 13 and parallel == pytest.approx(serial, rel=1e-12, abs=1e-14)
+    assert parallel[3::4] == serial[3::4]
+
+
+# a block of 10 planes (sc, 4 x 4 across) and a piece of 2 planes beyond its rear, apart
+PIECE = """units {units}
+boundary p p p
+lattice sc {a}
+region box block -2 18 0 4 0 4
+create_box 1 box
+region body block 0 9.9 INF INF INF INF
+region piece block 12 13.9 INF INF INF INF
+create_atoms 1 region body
+create_atoms 1 region piece
+mass 1 {m}
+pair_style morse/spline cut 1.2
+pair_coeff 1 1 {D} {alpha} {a}
+neighbor {skin} bin
+compute dust all dust maxsize 40
+compute face all free/surface dust {depth}
+compute body all free/surface dust {depth} minsize 33
+compute layer all free/surface dust {depth} minsize 32
+thermo_style custom step c_face[*] c_body[*] c_layer[*]
+"""
+
+
+@pytest.mark.parametrize("units", ["lj", "si"])
+def test_minsize_names_the_pieces_of_the_body(units):
+    """The piece of 2 planes (32 atoms) is dust by maxsize 40: the face is the block's
+    (x = 9a); with minsize 32 the piece is the body's outermost part (x = 13a), with minsize
+    33 it is not; the dust flags are not read with minsize."""
+    a, m, D = (1.0, 1.0, 1.0) if units == "lj" else (1e-5, 2.338e-12, 2.46e-6)
+    with session() as lmp:
+        lmp.commands_string(PIECE.format(units=units, a=a, m=m, D=D, alpha=3.76 / a,
+                                         skin=0.2 * a, depth=1.5 * a))
+        lmp.command("velocity all set 0.0 0.0 0.0")
+        lmp.command("run 0")
+        got = {c: [lmp.extract_compute(c, 0, 1)[i] for i in range(4)]
+               for c in ("face", "body", "layer")}
+    assert got["face"] == pytest.approx([0.0, 9 * a, 32, 0], rel=1e-12)
+    assert got["body"] == pytest.approx([0.0, 9 * a, 32, 0], rel=1e-12)
+    assert got["layer"] == pytest.approx([0.0, 13 * a, 32, 0], rel=1e-12)
+
+
+@pytest.mark.parametrize("units", ["lj", "si"])
+def test_jumps_count_a_face_that_leaves_its_path(units):
+    """A block and its outer piece moving together at V (t in the compute's time): no jump
+    over 200 steps evaluated every 10 (the face moves V dt, the check allows depth); the piece
+    deleted: the face jumps back 4 a > depth, counted once however often it is evaluated;
+    a face gone (every atom of the group deleted) is a jump too."""
+    a, m, D = (1.0, 1.0, 1.0) if units == "lj" else (1e-5, 2.338e-12, 2.46e-6)
+    tau = math.sqrt(m * a * a / D)
+    with session() as lmp:
+        lmp.commands_string(PIECE.format(units=units, a=a, m=m, D=D, alpha=3.76 / a,
+                                         skin=0.2 * a, depth=1.5 * a))
+        lmp.commands_list([f"velocity all set {0.5 * a / tau!r} 0.0 0.0 units box",
+                           "fix nve all nve", f"timestep {0.01 * tau!r}", "thermo 10",
+                           "run 200"])
+        layer = lambda: [lmp.extract_compute("layer", 0, 1)[i] for i in range(4)]
+        moved = layer()
+        lmp.commands_list(["delete_atoms region piece", "run 10"])
+        after = layer()
+        lmp.commands_list(["run 10", "run 0"])
+        still = layer()
+        lmp.commands_list(["delete_atoms group all", "run 1"])
+        gone = layer()
+    assert moved[0] == pytest.approx(0.5 * a / tau, rel=1e-9)
+    assert moved[1] == pytest.approx(13 * a + 200 * 0.01 * 0.5 * a, rel=1e-9)
+    assert moved[3] == 0
+    assert after[1] == pytest.approx(9 * a + 210 * 0.01 * 0.5 * a, rel=1e-9) and after[3] == 1
+    assert still[3] == 1 and gone[:3] == [0.0, 0.0, 0.0] and gone[3] == 2
 
 
 @pytest.mark.parametrize("args,message", [
@@ -99,6 +176,9 @@ def test_two_ranks_give_the_serial_values(tmp_path):
     ("dust 1.0 face back", "face must be rear or front"),
     ("dust 1.0 side rear", "unknown keyword 'side'"),
     ("dust 1.0 axis", "axis needs a value"),
+    ("dust 1.0 minsize 0", "minsize must be >= 1"),
+    ("dust 1.0 minsize 2.5", "minsize must be an integer"),
+    ("dust 1.0 minsize", "minsize needs a value"),
 ])
 def test_bad_arguments(args, message):
     with session() as lmp:

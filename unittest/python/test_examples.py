@@ -55,3 +55,40 @@ def test_params_table_matches_closed_forms():
     assert rows["Morse, alpha a = 6"][4] == pytest.approx(9.0, rel=1e-6)
     assert rows["4000"][0] == pytest.approx(0.76, abs=0.005)  # spec: y = 0.76 at 4 km/s
     assert "c0 = 5454 m/s, vd = 1451 m/s" in out
+
+
+def shock3d(*var):
+    return run_example("shock-3d", "in.shock3d", ("length", 4e-4), ("time", 3e-8),
+                       ("records", 10), ("out", "/tmp/test_examples_shock3d"), *var)
+
+
+def test_shock3d_takes_the_sets_cut():
+    """A metal's set carries its calibrated cut (pot_rc): in.shock3d runs it unless -var rc is
+    given, and then warns; a set without one (the paper's clusters) keeps Rc = 1.2; the line on
+    the paper's thresholds is printed for the paper's sets only."""
+    rc = float(re.search(r"variable pot_rc\s+equal\s+(\S+)",
+                         open(os.path.join(EXAMPLES, "..", "potentials",
+                                           "cu-hugoniot-10um.cd")).read()).group(1))
+    metal = shock3d(("pot", "cu-hugoniot-10um"), ("u", 200))
+    assert float(re.search(r"Rc = (\S+), u =", metal).group(1)) == pytest.approx(rc, rel=1e-12)
+    assert "a metal set (cu-hugoniot-10um" in metal and "threshold of its 3D runs" not in metal
+    assert "WARNING: Rc" not in metal
+    forced = shock3d(("pot", "cu-hugoniot-10um"), ("u", 200), ("rc", 1.2))
+    assert "Rc = 1.2, u =" in forced and "WARNING: Rc = 1.2 is not the cut" in forced
+    paper = shock3d(("u", 2000))
+    assert "Rc = 1.2, u =" in paper and "threshold of its 3D runs 1400 m/s" in paper
+    assert "WARNING: Rc" not in paper
+
+
+def test_shock3d_says_when_the_face_jumped():
+    """The copper set at u = 200 m/s, far above its dusting onset (30 m/s): layers leave the
+    body's face, and the free-surface speed printed is that of the outermost piece; the run
+    says so with compute free/surface's count of jumps (two thermal seeds: at least one has)."""
+    said = []
+    for seed in (1, 2):
+        out = run_example("shock-3d", "in.shock3d", ("pot", "cu-hugoniot-10um"), ("u", 200),
+                          ("length", 2e-3), ("time", 8e-7), ("seed", seed), ("records", 20),
+                          ("out", "/tmp/test_examples_shock3d"))
+        assert int(re.search(r"dust clusters beyond the body: (\d+)", out).group(1)) > 0
+        said.append(re.search(r"the face jumped (\d+) times", out))
+    assert any(said)

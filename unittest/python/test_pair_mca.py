@@ -494,6 +494,55 @@ def test_element_stress_matches_pressure_and_hooke(units):
     assert np.abs(s[:, 3:6]).max() < 1e-9 * g and abs(p[3]) < 1e-9 * g
 
 
+@pytest.mark.parametrize("units", ["lj", "si"])
+def test_shear_modulus_by_tilt_once_the_elements_turn(units):
+    """C44 of an fcc block by a tilt (change_box xy ... remap): a simple shear gamma is a pure
+    shear plus a rotation by -gamma/2 that the elements have not made.  Right after it (run 0)
+    the elements' stress (compute mca/atom, the symmetric part of Love's sum) is already
+    sxy = G gamma, but LAMMPS's pxy (the virial's sum of dx f_y, not symmetrized) reads 0: the
+    tangential forces of the unmade rotation load the elements with torques, and the energy is
+    twice the shear energy.  With the positions held (fix setforce) and the spins damped (fix
+    viscous/sphere) the elements turn: pxy = -G gamma, sxy = G gamma and the energy
+    G gamma^2 V / 2 (doc/compute_mca_atom.rst)."""
+    radius, g = SCALE[units]
+    rho = 1.35 * {"lj": 1.0, "si": 1.0e3}[units]
+    t0 = 2 * radius * math.sqrt(rho / g)
+    a = 2.0 * math.sqrt(2.0) * radius
+    lattice = f"lattice fcc {4.0 / a ** 3!r}" if units == "lj" else f"lattice fcc {a!r}"
+    gamma = 1.0e-4
+    with session() as lmp:
+        lmp.commands_list([
+            f"units {units}", "atom_style sphere", "boundary p p p", "comm_modify vel yes",
+            lattice, "region box prism 0 3 0 3 0 3 0 0 0", "create_box 1 box",
+            "create_atoms 1 box", f"set group all diameter {2 * radius}",
+            f"set group all density {rho / 0.7404804896930609!r}",
+            f"neighbor {0.2 * radius} bin",
+            "pair_style mca fraction 0.7404804896930609 tolerance 0.02",
+            f"pair_coeff 1 1 bulk {3 * g} shear {g}", "compute mca all mca/atom",
+            "compute p all pressure NULL virial", "fix nve all nve/sphere",
+            f"timestep {0.005 * t0!r}", "thermo_style custom step pe c_p[4]",
+            "thermo_modify norm no", "run 0",
+            f"change_box all xy final {gamma * 3 * a!r} remap units box", "run 0"])
+        unturned = (lmp.get_thermo("pe"), lmp.extract_compute("p", LMP_STYLE_GLOBAL,
+                                                              LMP_TYPE_VECTOR)[3],
+                    per_atom(lmp)[:, 3])
+        lmp.commands_list(["fix held all setforce 0.0 0.0 0.0",
+                           f"fix spin all viscous/sphere {0.7 * g * 8 * radius ** 3 * t0!r}",
+                           "run 3000"])
+        turned = (lmp.get_thermo("pe"), lmp.extract_compute("p", LMP_STYLE_GLOBAL,
+                                                            LMP_TYPE_VECTOR)[3],
+                  per_atom(lmp)[:, 3])
+        vol = lmp.get_thermo("vol")
+        nktv2p = lmp.extract_global("nktv2p")
+    energy = 0.5 * g * gamma ** 2 * vol / nktv2p
+    assert abs(unturned[1]) < 1e-5 * g * gamma
+    assert np.allclose(unturned[2], g * gamma, rtol=1e-5)
+    assert unturned[0] == pytest.approx(2 * energy, rel=1e-3)
+    assert turned[1] == pytest.approx(-g * gamma, rel=1e-5)
+    assert np.allclose(turned[2], g * gamma, rtol=1e-5)
+    assert turned[0] == pytest.approx(energy, rel=1e-3)
+
+
 sys.path.insert(0, os.path.join(HERE, "..", "..", "examples", "mca-elastic"))
 import bpm_compare  # noqa: E402
 import pulse  # noqa: E402
