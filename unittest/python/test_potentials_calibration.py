@@ -1,6 +1,7 @@
 """potentials/ parameter sets and tools/cd_calibrate.py: the sets load as documented and give
 the papers' numbers; calibrate -> load -> compute pair/params returns the requested v_l, vd."""
 import os
+import re
 import subprocess
 import sys
 
@@ -64,13 +65,47 @@ def test_calibration_round_trip(tmp_path, law, lattice):
     assert p["vl"] == pytest.approx(v_l, rel=1e-9)
     assert p["vd"] == pytest.approx(v_spall, rel=1e-9)
     # what the header says the set implies, against compute pair/params on the written set
-    implied = next(line for line in out.stdout.splitlines() if line.startswith("# implied"))
-    gamma = float(implied.split("Grueneisen (chain) ")[1].split(",")[0])
-    b = float(implied.split("b = ")[1].split(" a,")[0])
-    assert gamma == pytest.approx(p["Gamma"], rel=1e-3)
-    assert b == pytest.approx(p["b"] / p["a"], rel=1e-3)
-    assert "density 2700 " in implied
+    # (pair_style cut 1.2: its u_cr is the header's onset at Rc = 1.2); 4 digits printed
+    implied = header_numbers(out.stdout)
+    assert implied["gamma"] == pytest.approx(p["Gamma"], rel=1e-3)
+    assert implied["b"] == pytest.approx(p["b"] / p["a"], rel=1e-3)
+    assert implied["ucr12"] == pytest.approx(p["ucr"], rel=1e-3)
+    assert implied["ucr11"] == pytest.approx(p["ucr"] / 2, rel=1e-3)
+    assert implied["density"] == 2700.0
     assert "warning" not in out.stderr                  # kv = 3.9: the papers' range
+
+
+IMPLIED = re.compile(r"# implied: cluster \(lattice\) density (?P<density>\S+) \(the density "
+                     r"given, on this lattice of a\), Grueneisen \(chain\) (?P<gamma>\S+), "
+                     r"break \(inflection\) distance b = (?P<b>\S+) a, dusting onset "
+                     r"u_cr = 1.35 \(Rc - 1\) v0: (?P<ucr11>\S+) m/s at Rc = 1.1, "
+                     r"(?P<ucr12>\S+) m/s at Rc = 1.2 \(v0: the chain's speed a sqrt\(C/m\)\)$")
+
+
+def header_numbers(text):
+    """The numbers of the '# implied' header line (which must read as IMPLIED)."""
+    line = next(line for line in text.splitlines() if line.startswith("# implied"))
+    match = IMPLIED.match(line)
+    assert match, line
+    return {k: float(v) for k, v in match.groupdict().items()}
+
+
+@pytest.mark.parametrize("units", ["si", "metal", "lj"])
+def test_header_ratios_are_unit_free(tmp_path, units):
+    """The header's b / a and onsets are SI whatever --units writes (lj once printed b in
+    metres over a in lattice units: 1.178e-05 a); the set loaded in that style gives the
+    same b / a by compute pair/params."""
+    args = ["--density", "2700", "--sound-speed", "6420", "--spall-speed", "1500", "--size",
+            "1e-5", "--lattice", "fcc"]
+    si = header_numbers(subprocess.run([sys.executable, CALIBRATE, *args], capture_output=True,
+                                       text=True, check=True).stdout)
+    out = subprocess.run([sys.executable, CALIBRATE, *args, "--units", units],
+                         capture_output=True, text=True, check=True).stdout
+    assert header_numbers(out) == si
+    path = tmp_path / "set.cd"
+    path.write_text(out)
+    p = load(path)
+    assert si["b"] == pytest.approx(p["b"] / p["a"], rel=1e-3)
 
 
 def test_calibration_warns_far_from_the_papers_range():
@@ -79,17 +114,21 @@ def test_calibration_warns_far_from_the_papers_range():
     out = subprocess.run([sys.executable, CALIBRATE, "--density", "8900", "--sound-speed", "4760",
                           "--spall-speed", "120", "--size", "1e-5", "--lattice", "fcc"],
                          capture_output=True, text=True, check=True)
-    assert "cd_calibrate: warning: kv = v0 / v_spall = 36.1 is far" in out.stderr
-    assert "Grueneisen coefficient is 54.1" in out.stderr and "not a free-surface pull-back" in \
-        out.stderr
+    warned = re.search(r"cd_calibrate: warning: kv = v0 / v_spall = (\S+) is far.*Grueneisen "
+                       r"coefficient is (\S+) ", out.stderr)
+    kv = 4760 / 1.10 / 120                      # v0 / v_spall, v0 = v_l / lambda (fcc: 1.10)
+    assert float(warned.group(1)) == pytest.approx(kv, rel=2e-3)            # 3 digits printed
+    assert float(warned.group(2)) == pytest.approx(1.5 * kv, rel=2e-3)      # Morse: 1.5 alpha a
+    assert "not a free-surface pull-back" in out.stderr
 
 
 @pytest.mark.parametrize("args,message", [
     (["--spall-speed", "7000"], "admits no bonded solid"),
-    (["--spall-speed", "-1"], "spall speed must be a finite number > 0"),
-    (["--lattice", "hcp"], "unknown lattice 'hcp'"),
-    (["--law", "buck"], "unknown law 'buck'"),
-    (["--law", "mie", "--n", "4", "--m", "6"], "need n > m > 0"),
+    (["--spall-speed", "-1"], "--spall-speed must be a finite number > 0"),
+    (["--lattice", "hex"], "unknown --lattice 'hex'"),
+    (["--lattice", "hcp"], "--lattice hcp: Krivtsov's calibration (--spall-speed) knows chain"),
+    (["--law", "buck"], "unknown --law 'buck'"),
+    (["--law", "mie", "--n", "4", "--m", "6"], "need finite --n > --m > 0"),
 ])
 def test_calibration_rejects_data_without_a_potential(args, message):
     base = {"--density": "2700", "--sound-speed": "6420", "--spall-speed": "1500",
