@@ -50,12 +50,9 @@ namespace ClusterDyn {
 
     // the vector stage: the law with its tail at every rsq; UNIFORM: every pair has the
     // coefficients c0 (one atom type), else those of tp.  Pairs beyond the interaction end
-    // are zeroed by a factor 0, not by a select of a bool: GCC 12 vectorizes bool masks only
-    // with AVX-512's mask registers.  (Without link state the block holds only pairs inside
-    // the end; with it, a value beyond the end may be 0 x inf = NaN, and the link rule never
-    // reads it.)  (It does not
-    // vectorize the branches of the wagner and lagunov tails without AVX-512 either: there
-    // they run one pair after another.)
+    // (only with link state) are zeroed.  The loop and the tails hold no branch: every
+    // choice is a blend (vector_math.h), which GCC 12 vectorizes with AVX2 as with AVX-512
+    // (a `?:` of computed values or an `if` it vectorizes only with AVX-512's masks).
     // Every block is computed whole, the entries past n padded with the first one: a pair's
     // values never come from a scalar remainder loop (scalar exp differs from libmvec's in
     // the last bits), so they do not depend on where in a block the pair falls.
@@ -72,11 +69,11 @@ namespace ClusterDyn {
       for (int k = 0; k < SIZE; k++) {
         const SplineCoeff &c = UNIFORM ? c0 : coeffs[tp[k]];
         const double r2 = rsq[k];
-        const double inside = r2 < c.cutsq ? 1.0 : 0.0;
+        const bool inside = r2 < c.cutsq;
         double fp;
-        const double en = TailT::template eval<KAPPA, Law>(c, r2, fp);
-        fpair[k] = fp * inside;
-        e[k] = (en - c.offset) * inside;
+        const double en = TailT::template eval<KAPPA, Law, true>(c, r2, fp);
+        fpair[k] = blend(inside, fp, 0.0);
+        e[k] = blend(inside, en - c.offset, 0.0);
       }
     }
 

@@ -6,8 +6,12 @@
      derive<Law>()  the tail's kernel constants (SplineCoeff rc, and bsq, acsq,
                     wa2, wa3 or rs, rssq, inv_l2) from the kappa-modified base;
                     errors name the type pair
-     eval<KAPPA, Law>()  energy (unshifted) and fpair of a pair inside the
-                    interaction end (rsq < c.cutsq)
+     eval<KAPPA, Law, SIMD>()  energy (unshifted) and fpair of a pair inside
+                    the interaction end (rsq < c.cutsq); SIMD (the block's
+                    simd loop, spline_block.h): without a branch, each choice
+                    a blend of both sides (vector_math.h), so that AVX2
+                    vectorizes it as AVX-512 does; else (one pair at a time)
+                    a branch may skip what the pair does not need
      derivs<Law>()  Pi, Pi', Pi'', Pi''' of the law with the tail at r < rc
    cut: the law up to Rc a.  wagner: Wagner, Holian & Voter's cubic spline
    from the inflection point b to its end ac.  lagunov: Lagunov & Sinani's
@@ -19,6 +23,7 @@
 #define LMP_CLUSTERDYN_SPLINE_TAILS_H
 
 #include "spline_laws.h"
+#include "vector_math.h"
 
 #include <cmath>
 #include <utility>
@@ -53,7 +58,7 @@ namespace ClusterDyn {
     {
       c.rc = s.rc_rel * c.a;
     }
-    template <bool KAPPA, class Law>
+    template <bool KAPPA, class Law, bool SIMD = false>
     static inline double eval(const SplineCoeff &c, double rsq, double &fpair)
     {
       return Law::template eval<KAPPA>(c, rsq, fpair);
@@ -81,15 +86,17 @@ namespace ClusterDyn {
       c.wa3 = (3.0 * b2 - c.acsq) * fstar / (12.0 * b2 * b * (c.acsq - b2) * (c.acsq - b2));
       c.rc = sqrt(c.acsq);
     }
-    template <bool KAPPA, class Law>
+    template <bool KAPPA, class Law, bool SIMD = false>
     static inline double eval(const SplineCoeff &c, double rsq, double &fpair)
     {
-      if (rsq >= c.bsq) {
-        const double w = c.acsq - rsq;
-        fpair = 2.0 * w * (3.0 * c.wa3 * w - 2.0 * c.wa2);
-        return w * w * (c.wa3 * w - c.wa2);
-      }
-      return Law::template eval<KAPPA>(c, rsq, fpair);
+      // both sides for every pair, also one at a time: pairs on both sides of b alternate
+      // in a list, and a branch between them mispredicts (doc/benchmarks/bench_pair_spline.md)
+      double flaw;
+      const double elaw = Law::template eval<KAPPA>(c, rsq, flaw);
+      const double w = c.acsq - rsq;
+      const bool spline = rsq >= c.bsq;
+      fpair = blend(spline, 2.0 * w * (3.0 * c.wa3 * w - 2.0 * c.wa2), flaw);
+      return blend(spline, w * w * (c.wa3 * w - c.wa2), elaw);
     }
     template <class Law> static void derivs(const SplineCoeff &c, double r, double *d)
     {
@@ -120,19 +127,22 @@ namespace ClusterDyn {
       c.rssq = c.rs * c.rs;
       c.inv_l2 = 1.0 / ((c.rc - c.rs) * (c.rc - c.rs));
     }
-    template <bool KAPPA, class Law>
+    template <bool KAPPA, class Law, bool SIMD = false>
     static inline double eval(const SplineCoeff &c, double rsq, double &fpair)
     {
-      if (rsq >= c.rssq) {
-        const double r = sqrt(rsq);
-        double fbase;
-        const double e = Law::template eval<KAPPA>(c, rsq, fbase);
-        const double x = r - c.rs;
-        const double m = 1.0 - x * x * c.inv_l2;
-        fpair = m * (fbase * m + 4.0 * x * c.inv_l2 * e / r);
-        return e * m * m;
+      double fbase;
+      const double e = Law::template eval<KAPPA>(c, rsq, fbase);
+      // one pair at a time: most pairs lie before Rs, where a branch (well predicted) saves
+      // the root and the division
+      if (!SIMD && rsq < c.rssq) {
+        fpair = fbase;
+        return e;
       }
-      return Law::template eval<KAPPA>(c, rsq, fpair);
+      const double r = sqrt(rsq);
+      const double x = blend(rsq >= c.rssq, r - c.rs, 0.0);    // 0 before Rs: m = 1
+      const double m = 1.0 - x * x * c.inv_l2;
+      fpair = m * (fbase * m + 4.0 * x * c.inv_l2 * e / r);
+      return e * m * m;
     }
     template <class Law> static void derivs(const SplineCoeff &c, double r, double *d)
     {

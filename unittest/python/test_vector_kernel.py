@@ -4,7 +4,8 @@ pow in a `#pragma omp simd` loop, the instruction set chosen at build time
 (unittest's clusterdyn_avx2.so, -march=x86-64-v3) gives the same forces, energies and virials
 as the native build to 1e-12 on a hot block for every law, tail and mode, and holds no
 AVX-512 instruction; both equal stock morse to 1e-12 (more stock comparisons:
-test_pair_spline_stock.py)."""
+test_pair_spline_stock.py).  Every instance of its vector stage is vectorized in both builds
+(no scalar root, exp or pow: a disassembly check)."""
 import os
 import re
 import subprocess
@@ -118,6 +119,34 @@ def test_avx2_build_has_no_avx512_and_calls_vector_exp():
     code = instructions(AVX2)
     assert "%zmm" not in code
     assert "_ZGVdN4v_exp" in code            # libmvec's AVX2 exp, 4 doubles a call
+
+
+def vector_stages(path):
+    """The instances of the vector stage (SplineBlock::compute<Law, Tail, KAPPA, UNIFORM>,
+    src/spline_block.h) in a plugin: their names and disassembled bodies."""
+    code = subprocess.run(["objdump", "-d", "-C", "--no-show-raw-insn", path],
+                          capture_output=True, text=True, check=True).stdout
+    return {name: body for name, body in
+            re.findall(r"^[0-9a-f]+ <(.*?)>:\n(.*?)(?=\n\n|\Z)", code, re.S | re.M)
+            if "SplineBlock::compute<" in name and not name.endswith("@plt")}
+
+
+@pytest.mark.skipif(not os.path.isfile(AVX2), reason="clusterdyn_avx2.so not built")
+@pytest.mark.parametrize("plugin", [PLUGIN, AVX2], ids=["native", "avx2"])
+def test_every_tail_vectorized(plugin):
+    """Every instance of the vector stage (each law, tail, kappa and one or many atom types)
+    computes its pairs in vector registers: no scalar square root and no call of the scalar
+    exp or pow.  GCC 12 vectorizes an `if` or a `?:` of computed values in a tail only with
+    AVX-512's masks; the AVX2 build had the wagner and lagunov instances scalar (24 of 36) and
+    lagunov cost 1.7x the cut tail there (doc/benchmarks/bench_pair_spline.md)."""
+    stages = vector_stages(plugin)
+    for tail in ("CutTail", "WagnerTail", "LagunovTail"):
+        assert any(tail in name for name in stages), tail
+    scalar = [name for name, body in stages.items()
+              if re.search(r"\bv?sqrtsd\b|<(exp|pow)@plt>", body)]
+    assert not scalar, scalar
+    morse = [body for name, body in stages.items() if "MorseLaw" in name]
+    assert morse and all(re.search(r"_ZGV[bcde]N\d+v_exp", body) for body in morse)
 
 
 def test_native_build_calls_vector_exp():
