@@ -82,6 +82,9 @@ void ComputeFreeSurface::init()
 
 void ComputeFreeSurface::compute_vector()
 {
+  // not invoked (-1) on another step than the last evaluation: reset_timestep, or a new run
+  // whose last one did not end with an evaluation: the clock may not be the last's
+  if (invoked_vector < 0 && update->ntimestep != last.step) last.found = false;
   invoked_vector = update->ntimestep;
   if (dust->invoked_peratom != update->ntimestep) dust->compute_peratom();
   double **fragment = dust->array_atom;    // fragment ID, size (0: outside its group), dust flag
@@ -119,14 +122,15 @@ void ComputeFreeSurface::compute_vector()
    the mean of the two velocities put it: more than depth away, beyond what
    a change of velocity at any time in between can explain (half the change
    times the interval), or the face gone, is a jump.  A second evaluation
-   on the same step compares nothing.
+   on the same step compares nothing, nor the first after reset_timestep, a
+   rerun's earlier snapshot, or a run whose last did not end with one.
 ------------------------------------------------------------------------- */
 
 void ComputeFreeSurface::count_jump(bool found, double face, double velocity)
 {
   if (update->ntimestep == last.step) return;
   const double now = update->atime + (update->ntimestep - update->atimestep) * update->dt;
-  if (last.found) {
+  if (last.found && update->ntimestep > last.step) {
     const double interval = now - last.time;
     const double expected = last.face + sign * 0.5 * (last.velocity + velocity) * interval;
     const double slack = depth + 0.5 * fabs(velocity - last.velocity) * fabs(interval);

@@ -26,7 +26,7 @@ struct PropertyAtomFlags : FixPropertyAtom {
 
 std::string ClusterDyn::ghostless_rmass_fix(LAMMPS *lmp)
 {
-  for (const Fix *fix : lmp->modify->get_fix_by_style("^property/atom$"))
+  for (const Fix *fix : lmp->modify->get_fix_by_style("^property/atom"))
     if (PropertyAtomFlags::rmass_without_ghosts(static_cast<const FixPropertyAtom *>(fix)))
       return fix->id;
   return "";

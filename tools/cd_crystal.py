@@ -63,6 +63,9 @@ SPACINGS = {("fcc", "100"): (1, 1, 1), ("fcc", "110"): (1 / R2, 1 / R2, 1),
 HCP_ORIENT = {"0001": "orient x 0 0 1 orient y 1 0 0 orient z 0 1 0",
               "2-1-10": "orient x 1 0 0 orient y 0 1 0 orient z 0 0 1",
               "01-10": "orient x 0 1 0 orient y 0 0 1 orient z 1 0 0"}
+# atoms and volume (in its scale cubed) of LAMMPS's unit cell: in units lj the lattice
+# command takes a number density, n / (volume scale^3), instead of the scale
+LAMMPS_CELL = {"fcc": (4, 1.0), "bcc": (2, 1.0), "hcp": (4, math.sqrt(8.0))}
 LAMMPS_LATTICE = {
     (lat, k): (scale, f"{orient[k]} spacing {' '.join(f'{x!r}' for x in SPACINGS[(lat, k)])}")
     for lat, scale, orient in (("fcc", R2, CUBIC_ORIENT), ("bcc", 2 / R3, CUBIC_ORIENT),

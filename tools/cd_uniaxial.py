@@ -109,13 +109,6 @@ class Law:
             return 1.5 * self.shape
         return self.shape * (self.n + self.m + 3) / 2
 
-    def inflection(self):
-        """The inflection (break) distance b / r0 of the uncut law."""
-        if self.name == "morse":
-            return 1 + math.log(2) / self.shape
-        b0 = ((self.n + 1) / (self.m + 1)) ** (1 / (self.n - self.m))
-        return 1 + (b0 - 1) / self.shape
-
 
 class Uniaxial:
     """The lattice `lattice` with a law, strained along `orientation`: the pairs closer than

@@ -166,6 +166,22 @@ def test_jumps_count_a_face_that_leaves_its_path(units):
     assert still[3] == 1 and gone[:3] == [0.0, 0.0, 0.0] and gone[3] == 2
 
 
+@pytest.mark.parametrize("step", [0, 1000])
+def test_a_reset_clock_is_no_jump(step):
+    """reset_timestep (back to 0, or forward) between evaluations of a moving block: the
+    first evaluation after it compares nothing, the following ones follow the face again."""
+    with session() as lmp:
+        lmp.commands_string(PIECE.format(units="lj", a=1.0, m=1.0, D=1.0, alpha=3.76,
+                                         skin=0.2, depth=1.5))
+        lmp.commands_list(["group outer region piece",
+                           "velocity all set 0.5 0.0 0.0 units box", "fix nve all nve",
+                           "timestep 0.01", "thermo 10", "run 400", f"reset_timestep {step}",
+                           "run 10", "run 100"])
+        assert lmp.extract_compute("layer", 0, 1)[3] == 0
+        lmp.commands_list(["delete_atoms group outer", "run 10"])
+        assert lmp.extract_compute("layer", 0, 1)[3] == 1
+
+
 @pytest.mark.parametrize("args,message", [
     ("", "expected compute ID group free/surface dust-ID depth"),
     ("nosuch 1.0", "no compute with ID 'nosuch'"),
