@@ -32,8 +32,8 @@ lower bound: a note says so).
 --jump-column K: the column of compute free/surface's jump count (its 4th output: column 5
 after fix ave/time's v_now c_face[*]), the cumulative count of evaluations at which the face
 lay more than its depth away from where the previous evaluation's face and velocity put it
-(or vanished).  A change of the count from one record to the next after the shock's arrival,
-up to the end of the reading's window (the minimum, or with --rebound the record where the
+(or vanished).  A change of the count from one record to the next after the shock's arrival
+(less the smoothing's half width, as far back as the smoothed peak reads), up to the end of the reading's window (the minimum, or with --rebound the record where the
 rise was found, plus the smoothing's half width, as far as the smoothed velocity there
 reads) is refused: the face record has a gap there, the face was set by another piece of the
 body (a piece of the spalled layer counted as dust for a while, or one re-attached): give
@@ -175,7 +175,8 @@ def pull_back(t, v, pulse, smooth=5, rebound=0.0, *, lines=None, jumps=None):
                          f"pulse duration after its peak at {_named(peak, t, lines)}")
     if jumps is not None:
         last = min(end + int(smooth) // 2, len(t) - 1)
-        gaps = [k for k in range(arrived + 1, last + 1) if jumps[k] != jumps[k - 1]]
+        first = max(arrived + 1 - int(smooth) // 2, 1)    # the smoothed peak reads back so far
+        gaps = [k for k in range(first, last + 1) if jumps[k] != jumps[k - 1]]
         if gaps:
             raise ValueError(
                 f"the face record has a gap: the jump count changes at {_listed(gaps, t, lines)}"

@@ -333,12 +333,12 @@ def test_the_module_raises_value_errors(call, message):
 
 
 def test_a_gap_is_refused_only_where_the_reading_looks():
-    """The window: after the arrival (record 12, the first whose mean of 5 exceeds half the
-    plateau) up to the minimum (record 49, the first whose mean of 5 is the flat 261) and the
-    smoothing's reach (2 records): a jump at record 13 or 51 is refused, one at 12 or 52 is
-    not."""
+    """The window: from the arrival (record 12, the first whose mean of 5 exceeds half the
+    plateau) less the smoothing's reach (2 records: the peak's mean reads so far back) up to
+    the minimum (record 49, the first whose mean of 5 is the flat 261) and the smoothing's
+    reach: a change of the count at record 11 or 51 is refused, one at 10 or 52 is not."""
     v = trapezoid()
-    for at, refused in [(12, False), (13, True), (51, True), (52, False)]:
+    for at, refused in [(10, False), (11, True), (51, True), (52, False)]:
         try:
             pull_back(T, v, 4.4e-8, jumps=steps([at]))
             assert not refused, at
