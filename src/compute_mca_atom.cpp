@@ -67,8 +67,8 @@ void ComputeMcaAtom::compute_peratom()
     const double dxx = v[SXX] - v[MEAN], dyy = v[SYY] - v[MEAN], dzz = v[SZZ] - v[MEAN];
     v[EQUIVALENT] = sqrt(1.5 * (dxx * dxx + dyy * dyy + dzz * dzz) +
                          3.0 * (v[SXY] * v[SXY] + v[SXZ] * v[SXZ] + v[SYZ] * v[SYZ]));
-    v[LINKS] = s[i][PairMCA::STRESS_COLUMNS - 1];
-    v[VOLUME] = pair->element_volume(i);
+    v[LINKS] = s[i][McaElementStress::LINKS];
+    v[VOLUME] = McaElement::volume(atom->radius[i], pair->packing_fraction());
   }
 }
 

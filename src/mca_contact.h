@@ -22,13 +22,14 @@
 #define LMP_CLUSTERDYN_MCA_CONTACT_H
 
 #include <cmath>
+#include <initializer_list>
 
 namespace LAMMPS_NS {
 namespace ClusterDyn {
 
   struct McaContact {
     // a pair's doubles, seen from the list's atom i (the partner's copy has the vectors
-    // negated: PairMCA::transfer_history)
+    // negated: partner_copy)
     enum {
       REF = 0, AREA = 1, TAU = 2, DPREV = 5, KAPPA = 8, EPL = 9, SIG = 10, ROT = 11,
       NVALUES = 14
@@ -38,6 +39,18 @@ namespace ClusterDyn {
     // largest effective equivalent stress (damage); EPL: the plastic elongation; SIG: the
     // trial normal stress of this step (plasticity); ROT: the rotation of j relative to i (3),
     // turned with the contact's spin as TAU.  An unlinked contact uses TAU and DPREV.
+
+    // the pair's doubles as its partner sees them (fix neigh/history's transfer_history): the
+    // scalars copied, the vectors negated
+    static void partner_copy(const double *source, double *target)
+    {
+      for (const int k : {REF, AREA, KAPPA, EPL, SIG}) target[k] = source[k];
+      for (int k = 0; k < 3; k++) {
+        target[TAU + k] = -source[TAU + k];
+        target[DPREV + k] = -source[DPREV + k];
+        target[ROT + k] = -source[ROT + k];
+      }
+    }
 
     static double half_stiffness(double shear, double radius) { return 2.0 * shear / radius; }
 

@@ -5,8 +5,11 @@
 
 #include "mca_guard.h"
 
+#include "mca_element.h"
+
 #include "atom.h"
 #include "comm.h"
+#include "domain.h"
 #include "error.h"
 #include "fix.h"
 #include "force.h"
@@ -17,6 +20,21 @@
 
 using namespace LAMMPS_NS;
 using namespace ClusterDyn;
+
+void McaGuard::check_style(int tail_flag, int offset_flag) const
+{
+  if (!atom->radius_flag || !atom->omega_flag || !atom->torque_flag)
+    error->all(FLERR, "Pair mca requires atom_style sphere (elements with radius, omega and "
+               "torque)");
+  if (domain->dimension != 3)
+    error->all(FLERR, "Pair mca is three-dimensional (dimension 2 is not supported)");
+  if (comm->ghost_velocity == 0)
+    error->all(FLERR, "Pair mca needs the velocities of ghost elements: comm_modify vel yes");
+  if (utils::strmatch(update->integrate_style, "^respa"))
+    error->all(FLERR, "Pair mca is not for run_style respa (use run_style verlet)");
+  if (tail_flag) error->all(FLERR, "Pair mca: pair_modify tail yes does not apply");
+  if (offset_flag) error->all(FLERR, "Pair mca: pair_modify shift yes does not apply");
+}
 
 void McaGuard::init()
 {
@@ -68,8 +86,7 @@ void McaGuard::at_setup(const std::vector<McaMaterial> &scaled, double fraction)
   double shortest = INFINITY;
   for (int i = 0; i < atom->nlocal; i++) {
     const McaMaterial &m = scaled[type[i]];
-    const double volume = 4.0 * M_PI / 3.0 * radius[i] * radius[i] * radius[i] / fraction;
-    const double rho = rmass[i] / volume;
+    const double rho = rmass[i] / McaElement::volume(radius[i], fraction);
     shortest = MIN(shortest, 2.0 * radius[i] * sqrt(rho / (m.bulk + 4.0 * m.shear / 3.0)));
   }
   double all;

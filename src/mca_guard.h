@@ -2,6 +2,7 @@
    Cluster-dynamics plugin for LAMMPS: what pair_style mca checks about its
    elements, and the element sizes its cutoffs are made from (the box: the
    pair state, periodic_images.h).
+     check_style():   what the style needs of LAMMPS's settings
      init():          every element has a positive radius; the largest radius
                       per type (elements present, fix pour, fix deposit)
      each_step():     no element grown beyond those radii (fix adapt)
@@ -23,6 +24,9 @@ namespace ClusterDyn {
   class McaGuard : protected Pointers {
    public:
     McaGuard(LAMMPS *lmp) : Pointers(lmp) {}
+    // init_style(): the atom style, dimension, communication and integrator the style needs;
+    // pair_modify tail and shift do not apply
+    void check_style(int tail_flag, int offset_flag) const;
     void init();
     double largest_radius(int type) const { return rmax[type]; }
     void each_step() const;

@@ -7,6 +7,7 @@
 
 #include "atom.h"
 #include "fix.h"
+#include "memory.h"
 #include "modify.h"
 
 #include <cmath>
@@ -38,9 +39,22 @@ const double *McaPlasticity::plastic_strain() const
   return on ? strain_array() : nullptr;
 }
 
-void McaPlasticity::return_map(double *const *stress, const std::vector<McaMaterial> &scaled,
-                               double *const *out) const
+McaPlasticity::~McaPlasticity()
 {
+  memory->destroy(returned);
+}
+
+void McaPlasticity::grow(int nmax_atoms)
+{
+  if (!on || nmax_atoms <= nmax) return;
+  nmax = nmax_atoms;
+  memory->destroy(returned);
+  memory->create(returned, nmax, 2, "pair:returned");
+}
+
+void McaPlasticity::return_map(double *const *stress, const std::vector<McaMaterial> &scaled)
+{
+  double *const *out = returned;
   double *eps_p = strain_array();
   const int *type = atom->type;
   for (int i = 0; i < atom->nlocal; i++) {
@@ -59,4 +73,5 @@ void McaPlasticity::return_map(double *const *stress, const std::vector<McaMater
     eps_p[i] += deps;
     out[i][0] = (yield_now + m.hardening * deps) / sint;
   }
+  exchange.to_ghosts(returned, 2);
 }

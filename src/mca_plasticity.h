@@ -14,10 +14,12 @@
 #ifndef LMP_CLUSTERDYN_MCA_PLASTICITY_H
 #define LMP_CLUSTERDYN_MCA_PLASTICITY_H
 
+#include "mca_exchange.h"
 #include "mca_material.h"
 
 #include "pointers.h"
 
+#include <algorithm>
 #include <vector>
 
 namespace LAMMPS_NS {
@@ -28,21 +30,33 @@ namespace ClusterDyn {
     static constexpr const char *FIX_ID = "MCA_PLASTIC_STRAIN";
     static constexpr const char *NAME = "mca_plastic_strain";
 
-    explicit McaPlasticity(LAMMPS *lmp) : Pointers(lmp), on(false) {}
+    McaPlasticity(LAMMPS *lmp, McaExchange &exchange) :
+        Pointers(lmp), exchange(exchange), on(false), returned(nullptr), nmax(0)
+    {
+    }
+    ~McaPlasticity() override;
     // a material that yields: the per-element plastic strain (made once, kept after)
     void init(const std::vector<McaMaterial> &materials);
     bool active() const { return on; }
+    void grow(int nmax_atoms);
+    double memory_usage() const { return (double) nmax * 2 * sizeof(double); }
 
     // stress: Love's stress of my elements (energy/volume, xx yy zz xy xz yz) from their
-    // linked pairs; out: per element phi and the mean stress; eps_p of my elements grows
-    void return_map(double *const *stress, const std::vector<McaMaterial> &scaled,
-                    double *const *out) const;
+    // linked pairs; per element phi and the mean stress, sent to ghosts; eps_p of my
+    // elements grows
+    void return_map(double *const *stress, const std::vector<McaMaterial> &scaled);
+    // of a pair of elements: the return factor phi = min(phi_i, phi_j) and the mean stress
+    double phi(int i, int j) const { return std::min(returned[i][0], returned[j][0]); }
+    double mean(int i, int j) const { return 0.5 * (returned[i][1] + returned[j][1]); }
 
     // the plastic strain of my elements, or null (no material yields)
     const double *plastic_strain() const;
 
    private:
+    McaExchange &exchange;
     bool on;
+    double **returned;    // per element: phi and the mean stress
+    int nmax;
     double *strain_array() const;
   };
 

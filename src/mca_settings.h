@@ -1,7 +1,8 @@
 /* -*- c++ -*- ----------------------------------------------------------
    Cluster-dynamics plugin for LAMMPS: the settings of pair_style mca,
      pair_style mca fraction F [tolerance T] [manybody yes|no]
-   parsed whole, with their restart.
+   parsed whole, with their restart (which names the layout of a pair's
+   state, so that a restart of another layout is refused).
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_CLUSTERDYN_MCA_SETTINGS_H
@@ -9,6 +10,7 @@
 
 #include "arg_values.h"
 #include "keyword_set.h"
+#include "mca_contact.h"
 
 #include "comm.h"
 #include "utils.h"
@@ -64,8 +66,11 @@ namespace ClusterDyn {
       return s;
     }
 
+    // first the layout of a pair's state (McaContact::NVALUES): restarts of another are refused
     void write_restart(FILE *fp) const
     {
+      const int layout = McaContact::NVALUES;
+      fwrite(&layout, sizeof(int), 1, fp);
       fwrite(&fraction, sizeof(double), 1, fp);
       fwrite(&tolerance, sizeof(double), 1, fp);
       fwrite(&manybody, sizeof(int), 1, fp);
@@ -73,6 +78,13 @@ namespace ClusterDyn {
 
     void read_restart(FILE *fp, LAMMPS *lmp)
     {
+      int layout = 0;
+      if (lmp->comm->me == 0) utils::sfread(FLERR, &layout, sizeof(int), 1, fp, nullptr, lmp->error);
+      MPI_Bcast(&layout, 1, MPI_INT, 0, lmp->world);
+      if (layout != McaContact::NVALUES)
+        lmp->error->all(FLERR, "Pair mca: the restart file was written by another version of the "
+                        "plugin (its pairs keep another state): start from a data file, the links "
+                        "are made anew");
       if (lmp->comm->me == 0) {
         utils::sfread(FLERR, &fraction, sizeof(double), 1, fp, nullptr, lmp->error);
         utils::sfread(FLERR, &tolerance, sizeof(double), 1, fp, nullptr, lmp->error);

@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# Pair time of two builds of the plugin side by side, alternating runs in one session:
+# pair_style mca on the elastic block of bench_mca.md (examples/mca-elastic/in.bpm_timing,
+# 4 n^3 elements) and on bench/in.bit_mca (every part of the style: breaking, damage, yield,
+# friction, welding), and morse/spline on in.bench_pair.  Prints each case's median
+# Pair seconds (LAMMPS's timing breakdown, avg column) for A and B and their ratio B/A.
+#   bash bench/bench_pair_ab.sh BUILD_A BUILD_B [repeats]    (folders with env.sh)
+set -euo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
+examples=$(cd "$here/../examples" && pwd)
+a=$1 b=$2 reps=${3:-5}
+work=$(mktemp -d)
+cd "$work"
+pair_time() {  # build, input, lmp args...
+  local build=$1 input=$2; shift 2
+  (source "$build/env.sh"; OMP_NUM_THREADS=1 lmp -in "$input" -log none -nocite "$@" \
+     | awk '$1 == "Pair" && $2 == "|" {print $5}')
+}
+median() { sort -g | awk '{v[NR] = $1} END {print (NR % 2) ? v[(NR + 1) / 2] : 0.5 * (v[NR / 2] + v[NR / 2 + 1])}'; }
+case_() {  # label, input, lmp args...
+  local label=$1 input=$2; shift 2
+  : > A.txt; : > B.txt
+  for _ in $(seq "$reps"); do
+    pair_time "$a" "$input" "$@" >> A.txt
+    pair_time "$b" "$input" "$@" >> B.txt
+  done
+  local ma mb; ma=$(median < A.txt); mb=$(median < B.txt)
+  echo "$label: Pair s A $ma B $mb  B/A $(awk -v a="$ma" -v b="$mb" 'BEGIN {printf "%.3f", b / a}')"
+}
+case_ "mca elastic block n 8, 500 steps" "$examples/mca-elastic/in.bpm_timing" -var n 8 -var steps 500
+case_ "mca every part, 8 cells, 2 x 300 steps" "$here/in.bit_mca" -var cells 8
+case_ "morse/spline cut 1.2, block, 200 steps" "$here/../doc/benchmarks/in.bench_pair" -var steps 200 -var temp 1e16 \
+  -var pair "morse/spline cut 1.2" -var coeff "2.46e-6 3.76e5 1.0e-5"
+rm -rf "$work"

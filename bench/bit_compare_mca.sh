@@ -1,0 +1,50 @@
+#!/usr/bin/env bash
+# Compares two builds of the plugin to the last bit on pair_style mca: positions, velocities,
+# forces, torques, angular velocities, compute mca/atom and the pair's tallies written with %.17g
+# after bench/in.bit_mca (every part of the style at once), serial, on 2 ranks, with newton off
+# and without the many-body term, and after the reduced runs of the MCA examples (elastic
+# pulse, fracture bar, spall plate with and without yield).
+# Prints one line per case, "identical" or what differs.
+#   bash bench/bit_compare_mca.sh BUILD_A BUILD_B    (folders with env.sh)
+set -euo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
+examples=$(cd "$here/../examples" && pwd)
+a=$1 b=$2
+work=$(mktemp -d)
+finish='compute bitstress all mca/atom
+compute bitpair all pair mca
+thermo_style custom step pe pxx pxz
+run 0 post no
+write_dump all custom final.dump id x y z vx vy vz fx fy fz tqx tqy tqz omegax omegay omegaz c_bitstress[*] modify sort id format float %.17g
+print "ENERGY $(pe:%.17g) $(pxx:%.17g) $(pxz:%.17g) $(c_bitpair[1]:%.17g) $(c_bitpair[2]:%.17g) $(c_bitpair[3]:%.17g) $(c_bitpair[4]:%.17g) $(c_bitpair[5]:%.17g) $(c_bitpair[6]:%.17g)"'
+printf 'include %s/in.bit_mca\n%s\n' "$here" "$finish" > "$work/in.all"
+for ex in mca-elastic/in.pulse mca-fracture/in.bar mca-spall/in.plate; do
+  printf 'include %s/%s\n%s\n' "$examples" "$ex" "$finish" > "$work/in.$(basename "$(dirname "$ex")")"
+done
+one() {  # build, tag, input, ranks, lmp args...
+  local build=$1 tag=$2 input=$3 ranks=$4; shift 4
+  mkdir -p "$work/$tag" && cd "$work/$tag"
+  (source "$build/env.sh"; mpirun -np "$ranks" --oversubscribe lmp -in "$work/$input" -log none \
+     -nocite "$@" | grep '^ENERGY' > energy.txt)
+  cd "$work"
+}
+case_() {  # label, input, ranks, lmp args...
+  local label=$1 input=$2 ranks=$3; shift 3
+  one "$a" A "$input" "$ranks" "$@"
+  one "$b" B "$input" "$ranks" "$@"
+  if cmp -s A/final.dump B/final.dump && cmp -s A/energy.txt B/energy.txt; then
+    echo "$label: identical ($(wc -l < A/final.dump) dump lines, $(cut -c1-60 A/energy.txt))"
+  else
+    echo "$label: DIFFERENT"; diff A/energy.txt B/energy.txt | head -4
+  fi
+  rm -rf A B
+}
+case_ "every part, serial" in.all 1
+case_ "every part, 2 ranks" in.all 2
+case_ "every part, newton off, 2 ranks" in.all 2 -var newton off
+case_ "every part, manybody no" in.all 1 -var manybody no
+case_ "elastic pulse (reduced)" in.mca-elastic 1 -var n 3
+case_ "fracture bar (reduced)" in.mca-fracture 1 -var n 3 -var steps 3000 -var every 500
+case_ "spall plate (reduced)" in.mca-spall 1 -var flyer 4 -var target 8 -var cells 3 -var records 0
+case_ "spall plate with yield (reduced)" in.mca-spall 1 -var flyer 4 -var target 8 -var cells 3 -var records 0 -var yield 0.3e9
+rm -rf "$work"

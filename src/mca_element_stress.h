@@ -1,0 +1,68 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   Cluster-dynamics plugin for LAMMPS: the stress of each element of
+   pair_style mca by Love's formula (mca_element.h) and its count of linked
+   pairs, summed over the pairs of a pass, onto the owners and divided by
+   the element's volume: the trial stresses of plasticity (energy/volume)
+   and, once compute mca/atom has asked, the stresses of the last force
+   evaluation (pressure units, tension positive).
+------------------------------------------------------------------------- */
+
+#ifndef LMP_CLUSTERDYN_MCA_ELEMENT_STRESS_H
+#define LMP_CLUSTERDYN_MCA_ELEMENT_STRESS_H
+
+#include "mca_element.h"
+#include "mca_exchange.h"
+#include "pointers.h"
+
+#include <cstdint>
+
+namespace LAMMPS_NS {
+namespace ClusterDyn {
+
+  class McaElementStress : protected Pointers {
+   public:
+    // xx yy zz xy xz yz, then the linked pairs
+    enum { LINKS = 6, COLUMNS = 7 };
+
+    McaElementStress(LAMMPS *lmp, McaExchange &exchange) :
+        Pointers(lmp), exchange(exchange), rows(nullptr), nmax(0), wanted_flag(false),
+        fraction(1.0), step(-1), atoms(0)
+    {
+    }
+    ~McaElementStress() override;
+    void init(double packing_fraction) { fraction = packing_fraction; }
+    void grow(int nmax_atoms);
+    double memory_usage() const;
+
+    void request() { wanted_flag = true; }
+    bool wanted() const { return wanted_flag; }
+
+    void zero(int nall);
+    // a pair's share: q sym(n (x) f) (McaElement::dyad) and whether it is linked
+    void add(int i, double q, const double *sym, int linked)
+    {
+      McaElement::add_love(rows[i], q, sym);
+      rows[i][LINKS] += linked;
+    }
+    // the sums onto their owners, divided by the volume (energy/volume; in pressure units if
+    // asked, and then marked as the stresses of this step's atoms)
+    void to_owners(bool to_pressure);
+    double *const *trial() const { return rows; }
+    // the stresses of my atoms, or null unless they belong to the current atoms (this step,
+    // and the same atoms in the same slots)
+    double **current() const;
+
+   private:
+    McaExchange &exchange;
+    double **rows;
+    int nmax;
+    bool wanted_flag;
+    double fraction;
+    bigint step;
+    std::uint64_t atoms;    // atoms_fingerprint() when the stresses were made
+  };
+
+}    // namespace ClusterDyn
+}    // namespace LAMMPS_NS
+
+#endif

@@ -1,0 +1,141 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   Cluster-dynamics plugin for LAMMPS: the law of a linked pair of movable
+   cellular automata at one step (stateless, as spline_laws.h; its state is
+   the pair's doubles, mca_contact.h).  The pair transmits (1 - D) of its
+   effective stresses through its area S:
+     sigma~ = a (r - r_ref - e_p) [+ the many-body part, mca_manybody.h]
+     tau~  += a du_t (McaContact::slide)
+   plastic flow returns them radially by phi about the mean stress of the
+   two elements and stores the plastic elongation; the relative rotation
+   of the elements gives a moment (McaContact::moment); the pair's energy
+   is S (a e^2 / 2 + |tau~|^2 / (2a)) + the moment's; from this step's
+   stresses (mca_response.h) the pair damages (from the next step) or
+   breaks (now).  Formulas: doc/pair_mca.rst.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_CLUSTERDYN_MCA_LINKED_PAIR_H
+#define LMP_CLUSTERDYN_MCA_LINKED_PAIR_H
+
+#include "mca_contact.h"
+#include "mca_pair_tally.h"
+#include "mca_pair_walk.h"
+#include "mca_response.h"
+
+namespace LAMMPS_NS {
+namespace ClusterDyn {
+
+  struct McaLinkedPair {
+    using C = McaContact;
+    enum Outcome { HOLDS = 0, DAMAGES = 1, BREAKS = 2 };
+
+    const McaResponse &response;
+    double *v;         // the pair's state
+    double a;          // the stiffness of its halves in series
+    double intact;     // 1 - D
+    double area;       // S
+
+    McaLinkedPair(const McaResponse &response, double *v, double a) :
+        response(response), v(v), a(a), intact(response.intact(v[C::KAPPA])), area(v[C::AREA])
+    {
+    }
+
+    // the elastic part of the effective normal stress at separation r
+    static double elastic_stress(const double *v, double a, double r)
+    {
+      return a * (r - v[C::REF] - v[C::EPL]);
+    }
+
+    // the radial return by phi < 1 about the mean stress: sigma and tau move, the plastic
+    // elongation grows; returns the work dissipated (per pair); dv: the pair's volume change
+    double plastic_return(double &sigma, double phi, double mean, double r, double &dv)
+    {
+      double *tau = v + C::TAU;
+      const double back = (intact * sigma - mean) * (1.0 - phi) / intact;
+      const double e_old = r - v[C::REF] - v[C::EPL], tau2_old = C::dot(tau, tau);
+      v[C::EPL] += back / a;
+      sigma -= back;
+      for (int k = 0; k < 3; k++) tau[k] *= phi;
+      const double e_new = e_old - back / a;
+      dv = -intact * area * back / a;
+      return intact * area *
+          (0.5 * a * (e_old * e_old - e_new * e_new) + 0.5 * (tau2_old - C::dot(tau, tau)) / a);
+    }
+
+    // the relative rotation of j against i: turned with the contact, then advanced by
+    // dt (omega_j - omega_i)
+    void rotate(const C::Turn &turn, const double *omega_i, const double *omega_j, double dt)
+    {
+      double *rot = v + C::ROT;
+      turn.apply(rot);
+      for (int k = 0; k < 3; k++) rot[k] += dt * (omega_j[k] - omega_i[k]);
+    }
+
+    double elongation(double r) const { return r - v[C::REF] - v[C::EPL]; }
+
+    // the effective energy at separation r (moment: the effective moment on i)
+    double energy(const double *n, double r, double *moment) const
+    {
+      const double erot = C::moment(v + C::ROT, n, a, area, moment);
+      const double elong = elongation(r);
+      const double *tau = v + C::TAU;
+      return area * (0.5 * a * elong * elong + 0.5 * C::dot(tau, tau) / a) + erot;
+    }
+
+    // damage and breaking at this step's stresses: HOLDS, the equivalent stress is not above
+    // kappa (nothing changes); DAMAGES, kappa rises to it and lost is the share of the
+    // effective stresses lost (0 below sigma_d); BREAKS, it reaches the peak (lost: all)
+    Outcome respond(double sigma, double &lost)
+    {
+      const double *tau = v + C::TAU;
+      const double s = response.active() ? McaResponse::equivalent(sigma, C::dot(tau, tau)) : 0.0;
+      if (!(s > v[C::KAPPA])) return HOLDS;
+      if (s >= response.peak()) {
+        lost = intact;
+        return BREAKS;
+      }
+      lost = intact - response.intact(s);
+      v[C::KAPPA] = s;
+      return DAMAGES;
+    }
+
+    // this step after the trial stress sigma: the plastic return by phi about mean (phi < 1),
+    // the rotation (turn: null where the elements do not turn), damage or breaking, the
+    // force; false: the pair breaks and transmits nothing from now on
+    bool step(double sigma, double phi, double mean, const McaPairFrame &p, const C::Turn *turn,
+              const double *omega_i, const double *omega_j, double dt, const McaPairTally &tally,
+              bool energy_wanted, McaPairForce &out)
+    {
+      if (phi < 1.0) {
+        double dv;
+        tally.work(WORK_PLASTIC, plastic_return(sigma, phi, mean, p.r, dv));
+        tally.volume_change(McaManybody::CHANGE_PLASTIC, dv);
+      }
+      if (turn) rotate(*turn, omega_i, omega_j, dt);
+      double moment[3], lost = 0.0;
+      const double epair = energy(p.n, p.r, moment);
+      const double elong = elongation(p.r);
+      const Outcome outcome = respond(sigma, lost);
+      if (outcome != HOLDS)
+        tally.volume_change(outcome == BREAKS ? McaManybody::CHANGE_STATE
+                                              : McaManybody::CHANGE_DAMAGE, -lost * area * elong);
+      if (outcome == BREAKS) {
+        tally.changes.broken += tally.w;
+        tally.changes.ejump += tally.w * (intact * epair);
+        return false;
+      }
+      if (outcome == DAMAGES) tally.work(WORK_DAMAGE, lost * epair);
+      const double *tau = v + C::TAU;
+      for (int k = 0; k < 3; k++) {
+        out.ft[k] = intact * area * tau[k];
+        out.fi[k] = intact * area * sigma * p.n[k] + out.ft[k];
+        out.mom[k] = intact * moment[k];
+      }
+      if (energy_wanted) out.evdwl = intact * epair;
+      return true;
+    }
+  };
+
+}    // namespace ClusterDyn
+}    // namespace LAMMPS_NS
+
+#endif

@@ -1,0 +1,96 @@
+/* ----------------------------------------------------------------------
+   Cluster-dynamics plugin for LAMMPS: the many-body (volumetric) part of
+   pair_style mca (see mca_manybody.h).
+------------------------------------------------------------------------- */
+
+#include "mca_manybody.h"
+
+#include "mca_element.h"
+
+#include "atom.h"
+#include "memory.h"
+
+using namespace LAMMPS_NS;
+using namespace ClusterDyn;
+
+McaManybody::~McaManybody()
+{
+  memory->destroy(theta);
+  memory->destroy(dtheta);
+}
+
+void McaManybody::grow(int nmax_atoms)
+{
+  if (nmax_atoms <= nmax) return;
+  nmax = nmax_atoms;
+  memory->destroy(theta);
+  memory->destroy(dtheta);
+  memory->create(theta, nmax, 1, "pair:theta");
+  memory->create(dtheta, nmax, NCHANGES, "pair:dtheta");
+}
+
+double McaManybody::memory_usage() const
+{
+  return (double) nmax * (1 + NCHANGES) * sizeof(double);
+}
+
+double McaManybody::volume(int i) const
+{
+  return McaElement::volume(atom->radius[i], fraction);
+}
+
+void McaManybody::begin_strain(int nall)
+{
+  for (int i = 0; i < nall; i++) theta[i][0] = 0.0;
+}
+
+void McaManybody::finish_strain()
+{
+  exchange.to_owners(theta, 1);
+  for (int i = 0; i < atom->nlocal; i++) theta[i][0] /= volume(i);
+  exchange.to_ghosts(theta, 1);
+}
+
+double McaManybody::pair_stress(int i, int j, double ai, double aj) const
+{
+  const std::vector<McaMaterial> &m = *scaled;
+  const int *type = atom->type;
+  return (aj * m[type[i]].lambda * theta[i][0] + ai * m[type[j]].lambda * theta[j][0]) /
+      (ai + aj);
+}
+
+void McaManybody::begin_changes(int nall)
+{
+  for (int i = 0; i < nall; i++)
+    for (int c = 0; c < NCHANGES; c++) dtheta[i][c] = 0.0;
+}
+
+void McaManybody::tally_changes(StateTally &changes, int damage_work, int plastic_work)
+{
+  exchange.to_owners(dtheta, NCHANGES);
+  const int *type = atom->type;
+  for (int i = 0; i < atom->nlocal; i++) {
+    const double omega = volume(i);
+    const double half = 0.5 * (*scaled)[type[i]].lambda * omega;
+    double now = theta[i][0], e_now = half * now * now;
+    double released[NCHANGES];
+    for (int c = 0; c < NCHANGES; c++) {
+      now += dtheta[i][c] / omega;
+      const double e = half * now * now;
+      released[c] = e_now - e;
+      e_now = e;
+    }
+    changes.ejump += released[CHANGE_STATE];
+    changes.work[damage_work] += released[CHANGE_DAMAGE];
+    changes.work[plastic_work] += released[CHANGE_PLASTIC];
+  }
+}
+
+void McaManybody::tally_energy(double *total, double *per_atom) const
+{
+  for (int i = 0; i < atom->nlocal; i++) {
+    const double e = 0.5 * (*scaled)[atom->type[i]].lambda * volume(i) * theta[i][0] * theta[i][0];
+    if (total) *total += e;
+    if (per_atom) per_atom[i] += e;
+  }
+}

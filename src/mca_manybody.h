@@ -1,0 +1,88 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   Cluster-dynamics plugin for LAMMPS: the many-body (volumetric) part of
+   pair_style mca, per element i:
+     theta_i = (1/Omega_i) sum_j (1 - D_ij) S_ij w_i (r_ij - r_ref - e_p)
+   the volume change from the elastic elongations of its linked pairs (its
+   share w_i = a_j / (a_i + a_j) of each), summed onto owners and sent to
+   ghosts; a linked pair's normal stress gains
+     (a_j lambda_i theta_i + a_i lambda_j theta_j) / (a_i + a_j),
+   the element's energy is lambda_i Omega_i theta_i^2 / 2; the changes of
+   theta made by this step's breaking and welding (column 0), damage (1)
+   and plastic flow (2) release the energy between theta before and after
+   each, in that order.
+   The seam for a volumetric response beyond the linear one (an equation of
+   state): pair_stress(), energy() and the release in tally_changes().
+   Formulas: doc/pair_mca.rst.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_CLUSTERDYN_MCA_MANYBODY_H
+#define LMP_CLUSTERDYN_MCA_MANYBODY_H
+
+#include "mca_exchange.h"
+#include "mca_material.h"
+#include "pair_state.h"
+#include "pointers.h"
+
+#include <vector>
+
+namespace LAMMPS_NS {
+namespace ClusterDyn {
+
+  class McaManybody : protected Pointers {
+   public:
+    enum { CHANGE_STATE = 0, CHANGE_DAMAGE = 1, CHANGE_PLASTIC = 2, NCHANGES = 3 };
+
+    McaManybody(LAMMPS *lmp, McaExchange &exchange) :
+        Pointers(lmp), exchange(exchange), theta(nullptr), dtheta(nullptr), nmax(0),
+        fraction(1.0), scaled(nullptr)
+    {
+    }
+    ~McaManybody() override;
+    // materials in energy/volume; element volume = sphere volume / fraction
+    void init(const std::vector<McaMaterial> &materials, double packing_fraction)
+    {
+      scaled = &materials;
+      fraction = packing_fraction;
+    }
+    void grow(int nmax_atoms);
+    double memory_usage() const;
+
+    // the volumetric strain: zero, the pairs' elongations (share by stiffness), then finish
+    void begin_strain(int nall);
+    void add_elongation(int i, int j, double elong, double ai, double aj, bool jown)
+    {
+      theta[i][0] += elong * aj / (ai + aj);
+      if (jown) theta[j][0] += elong * ai / (ai + aj);
+    }
+    void finish_strain();
+
+    // the normal stress the many-body term adds to linked pair ij (a_i, a_j: half stiffnesses)
+    double pair_stress(int i, int j, double ai, double aj) const;
+
+    // the changes of theta this step makes (volume changes dv of pairs, shared as elongations)
+    void begin_changes(int nall);
+    void add_change(int column, int i, int j, double dv, double ai, double aj, bool jown)
+    {
+      dtheta[i][column] += dv * aj / (ai + aj);
+      if (jown) dtheta[j][column] += dv * ai / (ai + aj);
+    }
+    // the energies they release: state changes to the jump, damage and plastic flow to work
+    void tally_changes(StateTally &changes, int damage_work, int plastic_work);
+
+    // the elements' energies lambda Omega theta^2 / 2 added to the total and per atom (each
+    // null: not wanted)
+    void tally_energy(double *total, double *per_atom) const;
+
+   private:
+    McaExchange &exchange;
+    double **theta, **dtheta;
+    int nmax;
+    double fraction;
+    const std::vector<McaMaterial> *scaled;
+    double volume(int i) const;
+  };
+
+}    // namespace ClusterDyn
+}    // namespace LAMMPS_NS
+
+#endif

@@ -1,0 +1,46 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   Cluster-dynamics plugin for LAMMPS: what the law of one pair of
+   pair_style mca gives its force pass: the force on element i (all of it,
+   and the tangential part that makes the torques), a link's moment and the
+   pair's energy (McaPairForce); and where it tallies what it changes
+   (McaPairTally): the state counts and energies of the pair state (a pair
+   with a ghost counts w = 1/2 with newton off, as both processors see it),
+   the dissipated works, and the changes of volume that the many-body term
+   follows (mca_manybody.h).
+------------------------------------------------------------------------- */
+
+#ifndef LMP_CLUSTERDYN_MCA_PAIR_TALLY_H
+#define LMP_CLUSTERDYN_MCA_PAIR_TALLY_H
+
+#include "mca_manybody.h"
+#include "pair_state.h"
+
+namespace LAMMPS_NS {
+namespace ClusterDyn {
+
+  // the energies dissipated, in StateTally::work (and after the state's tally in pvector)
+  enum McaWork { WORK_DAMAGE = 0, WORK_PLASTIC = 1, WORK_FRICTION = 2, NWORK = 3 };
+
+  struct McaPairForce {
+    double fi[3], ft[3], mom[3] = {0.0, 0.0, 0.0}, evdwl = 0.0;
+  };
+
+  struct McaPairTally {
+    StateTally &changes;
+    double w;                 // 1, or 1/2 for a pair with a ghost and newton off
+    McaManybody *volume;      // null: the many-body term does not follow the changes
+    int i, j;
+    double ai, aj;            // the elements' half stiffnesses
+    bool jown;                // j's side is tallied here
+
+    void work(McaWork kind, double energy) const { changes.work[kind] += w * energy; }
+    void volume_change(int column, double dv) const
+    {
+      if (volume) volume->add_change(column, i, j, dv, ai, aj, jown);
+    }
+  };
+
+}    // namespace ClusterDyn
+}    // namespace LAMMPS_NS
+
+#endif

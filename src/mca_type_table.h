@@ -1,0 +1,62 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   Cluster-dynamics plugin for LAMMPS: what pair_coeff gives pair_style mca,
+   per element type: its material (mca_material.h) and, per pair of types,
+   whether they link; read from pair_coeff, written to and read from restart
+   and data files, and turned into the per-type-pair models
+   (mca_pair_model.h) and the moduli in energy/volume that the force
+   evaluation uses.
+     pair_coeff I I bulk K shear G ... [link yes|no]
+     pair_coeff I J link yes|no
+------------------------------------------------------------------------- */
+
+#ifndef LMP_CLUSTERDYN_MCA_TYPE_TABLE_H
+#define LMP_CLUSTERDYN_MCA_TYPE_TABLE_H
+
+#include "mca_material.h"
+#include "mca_pair_model.h"
+#include "pointers.h"
+
+#include <cstdio>
+#include <vector>
+
+namespace LAMMPS_NS {
+namespace ClusterDyn {
+
+  class McaTypeTable : protected Pointers {
+   public:
+    explicit McaTypeTable(LAMMPS *lmp) : Pointers(lmp) {}
+    void allocate();    // for atom->ntypes: nothing given yet, every pair of types links
+    void coeff(int narg, char **arg);
+    // init_style(): the materials in energy/volume (pressure / nktv2p)
+    void init();
+    // init_one(): the type pair's model, both orders (an error names a type without material)
+    void make_model(int itype, int jtype);
+    const McaPairModel &model(int itype, int jtype) const
+    {
+      return models[itype * (ntypes + 1) + jtype];
+    }
+
+    const std::vector<McaMaterial> &as_given() const { return material; }
+    const std::vector<McaMaterial> &scaled() const { return in_energy; }
+    // a material breaks, damages, yields or welds
+    bool responds() const;
+    bool links(int itype, int jtype) const { return !unlinkable[itype * (ntypes + 1) + jtype]; }
+
+    void write_restart(FILE *) const;
+    void read_restart(FILE *);
+    void write_data(FILE *) const;
+    void write_data_all(FILE *) const;
+
+   private:
+    int ntypes = 0;
+    std::vector<McaMaterial> material;    // per atom type, as given (pressure units)
+    std::vector<McaMaterial> in_energy;   // the same in energy/volume
+    std::vector<int> material_set;
+    std::vector<int> unlinkable;          // per type pair (i * (ntypes + 1) + j): never link
+    std::vector<McaPairModel> models;     // per type pair, made by init_one
+  };
+
+}    // namespace ClusterDyn
+}    // namespace LAMMPS_NS
+
+#endif

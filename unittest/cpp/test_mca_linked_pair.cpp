@@ -1,0 +1,118 @@
+// McaLinkedPair (mca_linked_pair.h, doc/pair_mca.rst "Linked pairs"): a link transmits
+// (1 - D) S (sigma~ n + tau~); its energy S (a e^2/2 + |tau~|^2/(2a)) + the moment's; plastic
+// flow returns sigma~ and tau~ radially about the mean stress; damage and breaking follow the
+// response of mca_response.h.
+#include "mca_linked_pair.h"
+
+#include "gtest/gtest.h"
+
+#include <cmath>
+
+using namespace LAMMPS_NS::ClusterDyn;
+using C = McaContact;
+
+namespace {
+
+// a link along x, at its reference length ref, area S, no stored stress
+struct Link {
+  double v[C::NVALUES] = {};
+  Link(double ref, double area)
+  {
+    v[C::REF] = ref;
+    v[C::AREA] = area;
+  }
+};
+
+McaPairFrame frame_along_x(double r)
+{
+  double x0[3] = {0.0, 0.0, 0.0}, x1[3] = {r, 0.0, 0.0};
+  double *x[2] = {x0, x1};
+  McaPairFrame p(x, 0, 1);
+  p.orient(0.5, 0.5);
+  return p;
+}
+
+}    // namespace
+
+TEST(McaLinkedPair, ForceIsMinusTheEnergysSlope)
+{
+  const McaResponse elastic;
+  const double a = 4.0, ref = 1.0, r = 1.003, h = 1e-6;
+  Link link(ref, 0.8);
+  McaLinkedPair law(elastic, link.v, a);
+  double moment[3], ep, em;
+  const double n[3] = {1.0, 0.0, 0.0};
+  ep = law.energy(n, r + h, moment);
+  em = law.energy(n, r - h, moment);
+  const double sigma = McaLinkedPair::elastic_stress(link.v, a, r);
+  EXPECT_NEAR(sigma, a * (r - ref), 1e-15);
+  // the force on i along n pulls it to j when stretched: dE/dr = S sigma
+  EXPECT_NEAR((ep - em) / (2.0 * h), law.area * sigma, 1e-8);
+}
+
+TEST(McaLinkedPair, PlasticReturnScalesTheDeviatorAndDissipatesTheEnergyLost)
+{
+  const McaResponse elastic;
+  const double a = 2.0, r = 1.01, phi = 0.6, mean = 0.005;
+  Link link(1.0, 0.5);
+  link.v[C::TAU + 1] = 0.01;
+  McaLinkedPair law(elastic, link.v, a);
+  const double n[3] = {1.0, 0.0, 0.0};
+  double moment[3];
+  const double e_before = law.energy(n, r, moment);
+  double sigma = McaLinkedPair::elastic_stress(link.v, a, r), dv = 0.0;
+  const double sigma0 = sigma;
+  const double work = law.plastic_return(sigma, phi, mean, r, dv);
+  EXPECT_NEAR(sigma - mean, phi * (sigma0 - mean), 1e-15);    // radial about the mean
+  EXPECT_NEAR(link.v[C::TAU + 1], phi * 0.01, 1e-17);
+  EXPECT_NEAR(link.v[C::EPL], (sigma0 - sigma) / a, 1e-15);    // the elongation that flowed
+  EXPECT_NEAR(sigma, McaLinkedPair::elastic_stress(link.v, a, r), 1e-15);
+  EXPECT_NEAR(work, e_before - law.energy(n, r, moment), 1e-15);
+  EXPECT_NEAR(dv, -law.area * (sigma0 - sigma) / a, 1e-15);    // the plastic elongation's volume
+}
+
+TEST(McaLinkedPair, HoldsDamagesAndBreaksAtTheResponsesStresses)
+{
+  const McaResponse response{1.0, 0.6};    // damage from 0.6, unlinks at 2 x 1.0 - 0.6 = 1.4
+  const double a = 1.0;
+  Link link(1.0, 1.0);
+  double lost = 1.0;
+  // below sigma_d the largest stress is kept and nothing is lost; compression never damages
+  EXPECT_EQ(McaLinkedPair(response, link.v, a).respond(0.5, lost), McaLinkedPair::DAMAGES);
+  EXPECT_EQ(lost, 0.0);
+  EXPECT_EQ(link.v[C::KAPPA], 0.5);
+  EXPECT_EQ(McaLinkedPair(response, link.v, a).respond(0.4, lost), McaLinkedPair::HOLDS);
+  EXPECT_EQ(McaLinkedPair(response, link.v, a).respond(-5.0, lost), McaLinkedPair::HOLDS);
+  McaLinkedPair law(response, link.v, a);
+  EXPECT_EQ(law.respond(1.0, lost), McaLinkedPair::DAMAGES);
+  EXPECT_EQ(link.v[C::KAPPA], 1.0);
+  EXPECT_NEAR(lost, 1.0 - response.intact(1.0), 1e-15);
+  McaLinkedPair damaged(response, link.v, a);    // lost counts from what was left
+  EXPECT_EQ(damaged.respond(1.2, lost), McaLinkedPair::DAMAGES);
+  EXPECT_NEAR(lost, response.intact(1.0) - response.intact(1.2), 1e-15);
+  McaLinkedPair breaking(response, link.v, a);
+  EXPECT_EQ(breaking.respond(1.4, lost), McaLinkedPair::BREAKS);
+  EXPECT_EQ(lost, breaking.intact);
+}
+
+TEST(McaLinkedPair, StepTransmitsTheIntactShareOrBreaks)
+{
+  const McaResponse response{1.0, 0.0};
+  const double a = 10.0, r = 1.05;    // sigma = 0.5
+  Link link(1.0, 0.3);
+  StateTally changes;
+  const McaPairTally tally{changes, 0.5, nullptr, 0, 1, 1.0, 1.0, true};
+  McaPairForce out;
+  const McaPairFrame p = frame_along_x(r);
+  const double omega[3] = {0.0, 0.0, 0.0};
+  McaLinkedPair law(response, link.v, a);
+  ASSERT_TRUE(law.step(0.5, 1.0, 0.0, p, nullptr, omega, omega, 0.01, tally, true, out));
+  EXPECT_NEAR(out.fi[0], 0.3 * 0.5, 1e-15);
+  EXPECT_NEAR(out.evdwl, 0.3 * 0.5 * a * 0.05 * 0.05, 1e-15);
+  EXPECT_EQ(changes.broken, 0.0);
+  const double energy = out.evdwl;
+  McaLinkedPair again(response, link.v, a);
+  EXPECT_FALSE(again.step(1.0, 1.0, 0.0, p, nullptr, omega, omega, 0.01, tally, true, out));
+  EXPECT_EQ(changes.broken, 0.5);                         // a pair with a ghost, newton off
+  EXPECT_NEAR(changes.ejump, 0.5 * energy, 1e-15);        // the energy it took with it
+}

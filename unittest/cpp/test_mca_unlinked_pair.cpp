@@ -1,0 +1,118 @@
+// McaUnlinkedPair (mca_unlinked_pair.h, doc/pair_mca.rst "Unlinked contacts"): compression
+// S_u a (r - R_i - R_j), dry friction capped at mu |sigma_n|, viscous friction eta v_t of the
+// contact points' relative tangential velocity, welding at the weld stress.
+#include "mca_unlinked_pair.h"
+
+#include "gtest/gtest.h"
+
+#include <cmath>
+
+using namespace LAMMPS_NS::ClusterDyn;
+using C = McaContact;
+
+namespace {
+
+McaPairFrame frame(double r, double ri, double rj)
+{
+  double x0[3], x1[3];
+  x0[0] = x0[1] = x0[2] = 0.0;
+  x1[0] = 0.0;
+  x1[1] = r;
+  x1[2] = 0.0;
+  double *x[2] = {x0, x1};
+  McaPairFrame p(x, 0, 1);
+  p.orient(ri, rj);
+  return p;
+}
+
+}    // namespace
+
+TEST(McaUnlinkedPair, CompressionOnTheHarmonicMeanFace)
+{
+  const double ri = 0.5, rj = 0.3, a = 7.0, r = 0.79;
+  const McaUnlinkedPair touch(ri, rj, a, r);
+  const double rh = 2.0 * ri * rj / (ri + rj);
+  EXPECT_NEAR(touch.area, std::sqrt(2.0) * rh * rh, 1e-15);
+  EXPECT_NEAR(touch.sigma, a * (r - ri - rj), 1e-15);
+  // the normal force is minus the slope of the energy S a overlap^2 / 2
+  const double h = 1e-7;
+  auto energy = [&](double rr) {
+    const McaUnlinkedPair t(ri, rj, a, rr);
+    return 0.5 * t.area * a * t.overlap * t.overlap;
+  };
+  EXPECT_NEAR((energy(r + h) - energy(r - h)) / (2.0 * h), touch.area * touch.sigma, 1e-9);
+}
+
+TEST(McaUnlinkedPair, RollingWithoutSlipHasNoViscousStress)
+{
+  const double n[3] = {0.0, 1.0, 0.0}, qi = 0.5, qj = 0.3, w = 2.0;
+  const double omega_i[3] = {0.0, 0.0, w}, omega_j[3] = {0.0, 0.0, -w * qi / qj};
+  // i turns about z and stands still; its contact point moves at -qi w along x; j, turning the
+  // other way, rolls on it with its centre still
+  const double vi[3] = {0.0, 0.0, 0.0}, vj[3] = {0.0, 0.0, 0.0};
+  double visc[3];
+  EXPECT_NEAR(McaUnlinkedPair::viscous(3.0, vi, vj, omega_i, omega_j, n, qi, qj, visc), 0.0, 1e-28);
+  // j sliding along x at u past a still i: eta u, tangential only
+  const double slide[3] = {0.4, 0.2, 0.0}, still[3] = {0.0, 0.0, 0.0};
+  const double power = McaUnlinkedPair::viscous(3.0, vi, slide, still, still, n, qi, qj, visc);
+  EXPECT_NEAR(visc[0], 3.0 * 0.4, 1e-15);
+  EXPECT_EQ(visc[1], 0.0);
+  EXPECT_NEAR(power, 1.2 * 1.2, 1e-14);
+}
+
+TEST(McaUnlinkedPair, SlidingAtTheCapDissipatesMuSigmaPerDistance)
+{
+  const double ri = 0.5, rj = 0.5, a = 50.0, r = 0.98, mu = 0.3, du = 0.01;
+  McaPairModel model;
+  model.friction = McaFriction{mu, 0.0, 0.0};
+  const McaUnlinkedPair touch(ri, rj, a, r);
+  double v[C::NVALUES] = {};
+  int word = 0;
+  StateTally changes;
+  const McaPairTally tally{changes, 1.0, nullptr, 0, 1, 2.0 * a, 2.0 * a, true};
+  McaPairForce out;
+  const McaPairFrame p = frame(r, ri, rj);
+  touch.step(model, word, 0, v, p, nullptr, a, nullptr, nullptr, 0.0, tally, true, out);
+  EXPECT_EQ(word, WORD_KEPT);    // a contact with dry friction keeps its stress
+  EXPECT_NEAR(out.fi[1], touch.area * touch.sigma, 1e-15);
+  // slid by du along x, beyond the cap (a du > mu |sigma|): the contact slips
+  double x0[3] = {0.0, 0.0, 0.0}, x1[3] = {du, r, 0.0};
+  double *x[2] = {x0, x1};
+  McaPairFrame moved(x, 0, 1);
+  moved.orient(ri, rj);
+  const McaUnlinkedPair pressed(ri, rj, a, moved.r);
+  const double before = changes.work[WORK_FRICTION];
+  pressed.step(model, word, 0, v, moved, nullptr, a, nullptr, nullptr, 0.0, tally, true, out);
+  const double cap = mu * std::fabs(pressed.sigma);
+  EXPECT_NEAR(std::hypot(out.ft[0], out.ft[1]), pressed.area * cap, 1e-12);
+  const double slip = du - cap / a;    // the slide less the elastic part the cap stores
+  // the slide's tangential part (to the new normal), less the elastic part the cap stores
+  const double slide = du * moved.n[1];    // |du - (du . n) n| for du along x
+  ASSERT_GT(a * slide, cap);
+  EXPECT_NEAR(changes.work[WORK_FRICTION] - before, pressed.area * cap * (slide - cap / a),
+              1e-12);
+}
+
+TEST(McaUnlinkedPair, WeldsPressedAtTheWeldStressIfTheTypesLink)
+{
+  const double ri = 0.5, rj = 0.5, a = 10.0, r = 0.9;    // sigma = -1
+  McaPairModel model;
+  model.friction = McaFriction{0.0, 0.0, 0.5};
+  StateTally changes;
+  const McaPairTally tally{changes, 1.0, nullptr, 0, 1, 20.0, 20.0, true};
+  McaPairForce out;
+  const McaPairFrame p = frame(r, ri, rj);
+  const McaUnlinkedPair touch(ri, rj, a, r);
+  for (const bool links : {false, true}) {
+    model.links = links;
+    double v[C::NVALUES] = {};
+    int word = 0;
+    touch.step(model, word, 0, v, p, nullptr, a, nullptr, nullptr, 0.0, tally, false, out);
+    EXPECT_EQ(state_now(word), links ? 1 : 0);
+    if (links) {
+      EXPECT_EQ(v[C::REF], ri + rj);    // linked at contact: its force unchanged
+      EXPECT_EQ(v[C::AREA], touch.area);
+    }
+  }
+  EXPECT_EQ(changes.formed, 1.0);
+}
