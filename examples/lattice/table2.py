@@ -20,7 +20,7 @@ import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.dirname(HERE))
-from lammps_driver import script  # noqa: E402
+from runner import script  # noqa: E402
 
 # the paper's Table 2: v_l/v0, v_s/v0, E/K, Poisson (None: not defined)
 PAPER = {

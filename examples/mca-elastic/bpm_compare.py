@@ -36,7 +36,7 @@ import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.dirname(HERE))
-from lammps_driver import script  # noqa: E402
+from runner import lmp_command, loops, script  # noqa: E402
 
 STRAIN = 1.0e-4
 NUS = (0.1, 0.2, 0.3, 0.4, 0.45)
@@ -160,17 +160,13 @@ def timing_once(style, steps=1000, n=10):
     """One serial run of in.bpm_timing; LAMMPS's timing breakdown (seconds) and the loop time."""
     env = dict(os.environ, OMP_NUM_THREADS="1")
     env.pop("LAMMPS_PLUGIN_PATH", None)
-    cmd = [os.environ.get("CLUSTERDYN_LMP", "lmp"), "-in", "in.bpm_timing", "-log", "none",
-           "-nocite", "-var", "style", style, "-var", "n", str(n), "-var", "steps", str(steps)]
-    out = subprocess.run(cmd, cwd=HERE, env=env, capture_output=True, text=True, check=True).stdout
+    out = lmp_command("in.bpm_timing", {"style": style, "n": n, "steps": steps}, HERE, env=env)
     res = {k: 0.0 for k in ROWS}
     for k in ROWS:
         m = re.search(rf"^{k}\s*\|([^|]*)\|([^|]*)\|", out, re.M)
         if m:
             res[k] = float(m.group(2))                      # avg time
-    m = re.search(r"Loop time of (\S+) on (\d+) procs for (\d+) steps with (\d+) atoms", out)
-    res["loop"] = float(m.group(1))
-    res["procs"], res["steps"], res["atoms"] = int(m.group(2)), int(m.group(3)), int(m.group(4))
+    res["loop"], res["procs"], res["steps"], res["atoms"] = loops(out)[0]
     res["version"] = re.search(r"^LAMMPS \((.*)\)", out, re.M).group(1)
     return res
 

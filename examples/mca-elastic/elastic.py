@@ -18,7 +18,7 @@ import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.dirname(HERE))
-from lammps_driver import script  # noqa: E402
+from runner import mean_sd, script  # noqa: E402
 
 STRAIN = 1.0e-4
 NUS = (0.1, 0.2, 0.3, 0.4, 0.45)
@@ -83,8 +83,8 @@ def coordination(tolerances=(0.0, 0.02, 0.05, 0.1), seeds=(1, 2, 3), nu=0.3, n=5
         v = [moduli(c)[1].mean() for c, _, _ in res]
         ea = [moduli(ca)[0].mean() for _, ca, _ in res]
         z = [s[2] for _, _, s in res]
-        lines.append(f"| {tol} | {np.mean(z):.2f} | {np.mean(e):.3f} ± {np.std(e, ddof=1):.3f} | "
-                     f"{np.mean(v):.3f} ± {np.std(v, ddof=1):.3f} | {np.mean(ea):.3f} |")
+        lines.append(f"| {tol} | {np.mean(z):.2f} | {mean_sd(e, 3)} | "
+                     f"{mean_sd(v, 3)} | {np.mean(ea):.3f} |")
     return "\n".join(lines) + "\n"
 
 

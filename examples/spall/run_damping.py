@@ -16,7 +16,7 @@ import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.dirname(HERE))
-from lammps_driver import script  # noqa: E402
+from runner import mean_sd, script  # noqa: E402
 from shock_records import pull_back  # noqa: E402
 
 JS = [0, 100, 50, 20, 10]
@@ -58,13 +58,10 @@ def main():
             out.append(f"| {label} | {shown} | above {RATIOS[-1]} | | | |")
             continue
         at = runs[RATIOS[first]]
-
-        def ms(values, fmt):
-            return f"{np.mean(values):{fmt}} ± {np.std(values, ddof=1):{fmt}}"
         out.append(f"| {label} | {shown} | {RATIOS[first]} | "
-                   f"{ms([r['sigma'] / 1e9 for r in at], '.2f')} | "
-                   f"{ms([r['removed'] / r['impact'] for r in at], '.3f')} | "
-                   f"{ms([r['dust'] for r in at], '.3f')} |")
+                   f"{mean_sd([r['sigma'] / 1e9 for r in at], 2)} | "
+                   f"{mean_sd([r['removed'] / r['impact'] for r in at], 3)} | "
+                   f"{mean_sd([r['dust'] for r in at], 3)} |")
         print(out[-1], flush=True)
     out += ["", f"Aluminium clusters (al-cluster-10um, cut at 1.3 a), fcc [100], flyer 10 and "
             f"target 20 cells, 2 x 2 cells across; {len(SEEDS)} seeds per speed (1 m/s thermal "

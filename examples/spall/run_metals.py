@@ -13,7 +13,6 @@ runs/metals/.  About 4 minutes on two cores.
     source ../../build/env.sh; /usr/bin/python3 run_metals.py
 """
 import functools
-import multiprocessing
 import os
 import sys
 
@@ -26,7 +25,7 @@ sys.path.insert(0, os.path.join(TOP, "tools"))
 import cd_calibrate  # noqa: E402
 import cd_uniaxial  # noqa: E402
 import run_spall  # noqa: E402
-from lammps_driver import script  # noqa: E402
+from runner import mean_sd, parallel, script  # noqa: E402
 from shock_records import XT, shock_speed  # noqa: E402
 
 ROOT = os.path.join(HERE, "runs", "metals")
@@ -90,11 +89,6 @@ def impact(job):
                 ideal=p["strength"], ucr=p["ucr"])
 
 
-def ms(values, scale=1e9, digits=2):
-    values = np.asarray(values) / scale
-    return f"{values.mean():.{digits}f} ± {values.std(ddof=1):.{digits}f}"
-
-
 def calibration_section():
     out = ["## The sets (tools/cd_calibrate.py, fcc [100] along the impact, a = 10 um)", "",
            "| | aluminium | copper |", "|---|---|---|"]
@@ -127,7 +121,7 @@ def hugoniot_section(points):
         for up in HUGONIOT_UP:
             rows = [r for r in points if r["metal"] == metal and r["up"] == up]
             us = [r["us"] for r in rows]
-            out.append(f"| {metal} | {up:.0f} | {ms(us, 1, 0)} | {rows[0]['predicted']:.0f} | "
+            out.append(f"| {metal} | {up:.0f} | {mean_sd(us, 0)} | {rows[0]['predicted']:.0f} | "
                        f"{rows[0]['handbook']:.0f} | {np.mean(us) / rows[0]['handbook']:.3f} |")
     return out + ["", f"Means ± sd of {len(SEEDS[:3])} seeds.", ""]
 
@@ -144,8 +138,9 @@ def spall_section(impacts):
                         r["J"] == J and r["rc"] == calibrated(metal)["rc"]]
                 sigma = [r["sigma"] for r in rows if r["spall"]] or [np.nan, np.nan]
                 out.append(f"| {metal} | {v:.0f} | {J or 'none'} | "
-                           f"{sum(r['spall'] for r in rows)}/{len(rows)} | {ms(sigma)} | "
-                           f"{ms([r['tension'] for r in rows])} | "
+                           f"{sum(r['spall'] for r in rows)}/{len(rows)} | "
+                           f"{mean_sd(sigma, 2, 1e9)} | "
+                           f"{mean_sd([r['tension'] for r in rows], 2, 1e9)} | "
                            f"{METALS[metal]['strength'] / 1e9:.1f} | "
                            f"{np.mean(sigma) / METALS[metal]['strength']:.2f} |")
     return out + [""]
@@ -164,7 +159,7 @@ def trade_section(impacts):
             out.append(f"| {p['rc']:.4g} | {p['strength'] / 1e9:.2f} | {p['ucr']:.0f} | {v:.0f} | "
                        f"{sum(r['spall'] for r in rows)}/{len(rows)} | "
                        f"{np.mean([r['large'] for r in rows]):.1f} | "
-                       f"{pull_backs(rows)} | {ms([r['tension'] for r in rows])} | "
+                       f"{pull_backs(rows)} | {mean_sd([r['tension'] for r in rows], 2, 1e9)} | "
                        f"{np.mean([r['tension'] for r in rows]) / p['strength']:.2f} |")
     return out + ["", "Spall: two or more large fragments (over a tenth of the target each); one "
                   "is a target that held, or one shattered into dust and small pieces (then the "
@@ -177,7 +172,7 @@ def pull_backs(rows):
     spalled = [r["sigma"] for r in rows if r["spall"]]
     if not spalled:
         return "-"
-    return ms(spalled) if len(spalled) > 1 else f"{spalled[0] / 1e9:.2f}"
+    return mean_sd(spalled, 2, 1e9) if len(spalled) > 1 else f"{spalled[0] / 1e9:.2f}"
 
 
 def plot(points, impacts):
@@ -221,9 +216,8 @@ def main():
     jobs_i += [("aluminium", v, 0, s, rc) for rc in TRADE_RC[1:] for v in TRADE_SPEEDS
                for s in SEEDS[:3]]
     jobs_i += [("aluminium", 1000.0, 0, s, None) for s in SEEDS[:3]]
-    with multiprocessing.Pool(2) as pool:
-        points = pool.map(hugoniot_point, jobs_h, chunksize=1)
-        impacts = pool.map(impact, jobs_i, chunksize=1)
+    points = parallel(hugoniot_point, jobs_h)
+    impacts = parallel(impact, jobs_i)
     text = ["# Clusters calibrated to aluminium and copper (written by run_metals.py)", ""]
     text += calibration_section() + hugoniot_section(points) + spall_section(impacts)
     text += trade_section(impacts)

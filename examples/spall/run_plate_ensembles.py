@@ -16,8 +16,8 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, ".."))
 sys.path.insert(0, os.path.join(HERE, "..", "..", "tools"))
-import lammps_driver  # noqa: E402
 import pull_back  # noqa: E402
+from runner import script, table  # noqa: E402
 
 TEMPLATE = os.path.join(HERE, "in.plate")
 # (set, impact speed in m/s, the strength the set stands for in Pa or None)
@@ -31,7 +31,7 @@ def run(pot, v, seed, workdir):
     """One run of the template: a dict of the large fragments [(size, x, vx)], the jump
     count, and the reading (sigma, dU) or the refusal's message."""
     var = {"pot": pot, "v": v, "seed": seed, "out": "plate"}
-    with lammps_driver.script(TEMPLATE, var, workdir) as lmp:
+    with script(TEMPLATE, var, workdir) as lmp:
         lmp.commands_list(["variable maxsize equal floor(count(target)/10)",
                            "compute rows target dust maxsize ${maxsize} rows all",
                            "run 0 post no"])
@@ -89,9 +89,8 @@ def main(seeds=24):
              "of the target (more than a tenth of it) at the end; the records of the runs that "
              "spalled (2 or more) read by pull_back.py --rebound 0.1 --jump-column 5 (refused: "
              "a gap).  Tantalum's set is at the floor of bcc [110], 17 GPa (the metal's 5.1 "
-             "GPa: doc/plate_impact.rst).  Made by run_plate_ensembles.py.", "",
-             "| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
-    lines += ["| " + " | ".join(str(c) for c in row) + " |" for row in rows]
+             "GPa: doc/plate_impact.rst).  Made by run_plate_ensembles.py.", ""]
+    lines += table(head, rows)
     open(os.path.join(HERE, "plate_ensembles.md"), "w").write("\n".join(lines) + "\n")
     plot(readings)
 

@@ -10,16 +10,16 @@ velocity histories with their pull-back, x-t diagrams) of ensembles at a few imp
 run in runs/: records.md and spall_records.png.
 """
 import os
-import time
-
 import sys
+import time
 
 import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.dirname(HERE))
-from lammps_driver import script  # noqa: E402
+from runner import mean_sd, script, tag  # noqa: E402
 from shock_records import XT, plot_xt, pull_back  # noqa: E402
+
 CASES = {  # label: in.spall settings
     "Morse, alpha a = 3.76 (aluminium clusters)": {"pot": "al-cluster-10um"},
     "Morse, alpha a = 6": {"pot": "morse-lj-match"},
@@ -67,8 +67,7 @@ def record(ratio, seed, lam, root=os.path.join(HERE, "runs"), **var):
     its pull-back dU and the spall strength 1/2 rho0 c0 dU (rho0 from the x-t density of the
     target at the start, c0 = lam v0), next to the largest tension of the x-t virial
     pressure."""
-    workdir = os.path.join(root, "-".join(f"{k}{v}" for k, v in
-                                          sorted(dict(var, ratio=ratio, seed=seed).items())))
+    workdir = os.path.join(root, tag(dict(var, ratio=ratio, seed=seed)))
     os.makedirs(workdir, exist_ok=True)
     with script(os.path.join(HERE, "in.spall"), {"ratio": ratio, "seed": seed, **var}, workdir,
                 "log.lammps") as lmp:
@@ -101,17 +100,14 @@ def records_section(thresholds):
         for ratio in RECORD_RATIOS:
             runs = [record(ratio, seed, lam, **settings) for seed in SEEDS]
             shown[(label, ratio)] = runs[0]
-
-            def ms(values):
-                return f"{np.mean(values):.2f} ± {np.std(values, ddof=1):.2f}"
             dU = [r["peak"][1] - r["low"][1] for r in runs]
             thr = thresholds.get(label)
             at_threshold = (0.5 * runs[0]["rho0"] * runs[0]["c0l"] * thr * runs[0]["vd"] / 1e9
                             if thr else float("nan"))
             out.append(f"| {label} | {ratio} | {sum(r['large'] >= 2 for r in runs)}/{len(runs)} | "
                        f"{np.mean([r['peak'][1] for r in runs]):.0f} | {np.mean(dU):.0f} ± "
-                       f"{np.std(dU, ddof=1):.0f} | {ms([r['sigma'] / 1e9 for r in runs])} | "
-                       f"{ms([r['tension'] / 1e9 for r in runs])} | {at_threshold:.2f} |")
+                       f"{np.std(dU, ddof=1):.0f} | {mean_sd([r['sigma'] / 1e9 for r in runs])} | "
+                       f"{mean_sd([r['tension'] / 1e9 for r in runs])} | {at_threshold:.2f} |")
     out += ["", f"Ensembles of {len(SEEDS)} seeds (1 m/s thermal start), mean ± sd; rho0 from "
             "the x-t density of the target at the start, c0 = v0 (fcc [100]) or 1.06 v0 "
             "(triangular), v0 from compute pair/params; the threshold from the sweep above "

@@ -5,7 +5,7 @@
 # with every build once, so that a slow spell of a shared machine falls on all of them.
 # Prints a markdown table: best and median Pair time of $reps rounds (all of them), best Loop.
 #   source build/env.sh
-#   bash doc/benchmarks/bench_pair_spline_simd.sh [steps] [reps] [label=plugin.so ...]
+#   bash bench/bench_pair_spline_simd.sh [steps] [reps] [label=plugin.so ...]
 # Default builds: native=$CLUSTERDYN_PLUGIN and avx2=$CLUSTERDYN_BUILD/unittest/clusterdyn_avx2.so
 # (the test suite's -march=x86-64-v3 build: the code a CPU without AVX-512 runs).
 set -euo pipefail

@@ -5,10 +5,10 @@
 # -sf omp with 2 threads, and the block with the other tails, kappa and laws and with fix
 # viscous/relative (serial).
 # Prints one line per case, "identical" or the energies that differ.
-#   bash doc/benchmarks/bit_compare.sh BUILD_A BUILD_B    (folders with env.sh)
+#   bash bench/bit_compare.sh BUILD_A BUILD_B    (folders with env.sh)
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
-shock=$(cd "$here/../../examples/shock-3d" && pwd)
+shock=$(cd "$here/../examples/shock-3d" && pwd)
 a=$1 b=$2
 work=$(mktemp -d)
 finish='thermo_style custom step pe pxx pyy pzz pxy pxz pyz

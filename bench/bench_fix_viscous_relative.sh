@@ -2,7 +2,7 @@
 # Cost of fix viscous/relative on the 32,000-cluster fcc block (in.bench_pair): LAMMPS's
 # loop, Pair, Modify and Comm times with and without the fix, the run with the smallest loop
 # time of $reps, the configurations interleaved (this machine's speed drifts); markdown table.
-#   source build/env.sh; bash doc/benchmarks/bench_fix_viscous_relative.sh [steps] [reps] [threads]
+#   source build/env.sh; bash bench/bench_fix_viscous_relative.sh [steps] [reps] [threads]
 # threads > 1: the /omp styles (-sf omp -pk omp threads)
 set -euo pipefail
 cd "$(dirname "$0")"

@@ -2,7 +2,7 @@
 # Cost of compute dust on the 32,000-cluster fcc block (in.bench_pair, morse/spline cut 1.2):
 # loop time without and with c_dust in the thermo output, evaluated every 100 steps and, to
 # resolve the cost of one evaluation, every step; best of $reps runs; markdown table.
-#   source build/env.sh; bash doc/benchmarks/bench_compute_dust.sh [steps] [reps]
+#   source build/env.sh; bash bench/bench_compute_dust.sh [steps] [reps]
 set -euo pipefail
 cd "$(dirname "$0")"
 steps=${1:-2000}

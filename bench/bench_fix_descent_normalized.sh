@@ -2,7 +2,7 @@
 # Cost of one fix descent/normalized iteration (plain, and with inertia 20 0.99) against one
 # velocity-Verlet step (fix nve) on the same 2D lattice (in.bench_descent, 40,000 particles):
 # LAMMPS's Pair, Modify and loop times, best of $reps runs each; markdown table.
-#   source build/env.sh; bash doc/benchmarks/bench_fix_descent_normalized.sh [steps] [reps]
+#   source build/env.sh; bash bench/bench_fix_descent_normalized.sh [steps] [reps]
 set -euo pipefail
 cd "$(dirname "$0")"
 steps=${1:-1000}

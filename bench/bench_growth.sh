@@ -2,7 +2,7 @@
 # Growth with N: the fcc block of in.bench_pair from 4,000 to 2,048,000 clusters, stock morse
 # and morse/spline cut 1.2 one after the other: Pair ns per atom-step, the loop's ns per
 # atom-step and LAMMPS's memory per cluster (bytes, "Per MPI rank memory allocation", max).
-#   source build/env.sh; bash doc/benchmarks/bench_growth.sh [reps]
+#   source build/env.sh; bash bench/bench_growth.sh [reps]
 set -euo pipefail
 cd "$(dirname "$0")"
 reps=${1:-3}

