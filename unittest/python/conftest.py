@@ -5,14 +5,25 @@ CLUSTERDYN_LMP the lmp executable; LAMMPS_PLUGIN_PATH is unset so that every tes
 loads the plugin by path.  LAMMPS keeps one plugin registry per process, so only
 one LAMMPS instance with the plugin may be open at a time: `session()` unloads
 it ("plugin clear") when it closes.
+
+Shared by the test files: input templates (fcc_block(), morse_fcc(), morse_dimer(),
+SI_CLUSTERS, MCA_FCC_BLOCK), each style's table of hostile input (InputTable, check_input(),
+the scenes scene_*() and SCENE_*), and the check of cumulative totals across run boundaries
+and restart files (carried_totals()).
 """
 import contextlib
+import json
+import math
 import os
+import re
 import subprocess
+import sys
 
 import numpy as np
+import pytest
 from lammps import lammps
 
+HERE = os.path.dirname(os.path.abspath(__file__))
 PLUGIN = os.environ["CLUSTERDYN_PLUGIN"]
 LMP = os.environ["CLUSTERDYN_LMP"]
 PAIR_STYLES = [s + v for s in ("morse/spline", "lj/spline", "mie/spline", "harmonic/spline")
@@ -95,6 +106,62 @@ def fcc_block(lmp, n=4, a=1.0, noise=0.03, temp=0.05, seed=4711, ntypes=1, rmass
                            "set type 2 mass 2.0" if rmass else "mass 2 2.0"])
 
 
+def morse_fcc(n=3, pair="morse/spline cut 1.3", noise=0.05, skin=0.3, atom_map=True):
+    """Input lines of a periodic fcc block of n x n x n cells (units lj, nearest neighbours at
+    a = 1, mass 1), displaced at random by noise (seed 4711, independent of the decomposition),
+    Morse D = 1, alpha a = 6 under `pair`, with a neighbor skin."""
+    shake = [f"displace_atoms all random {noise} {noise} {noise} 4711 units box"] if noise else []
+    return ["units lj", *(["atom_modify map array"] if atom_map else []),
+            "lattice fcc 1.41421356", f"region box block 0 {n} 0 {n} 0 {n}", "create_box 1 box",
+            "create_atoms 1 box", "mass 1 1.0", *shake, f"pair_style {pair}",
+            "pair_coeff * * 1.0 6.0 1.0", f"neighbor {skin} bin"]
+
+
+def morse_dimer(r=1.0, pair="morse/spline cut 1.3 link 1.05", atom_map=False):
+    """Input lines of two atoms r apart along x, from the origin, in a box -4..4 (units lj,
+    mass 1), Morse D = 1, alpha a = 6, a = 1 under `pair`."""
+    return ["units lj", *(["atom_modify map array"] if atom_map else []),
+            "region box block -4 4 -4 4 -4 4", "create_box 1 box", "mass 1 1.0",
+            "create_atoms 1 single 0 0 0 units box", f"create_atoms 1 single {r} 0 0 units box",
+            f"pair_style {pair}", "pair_coeff * * 1.0 6.0 1.0", "neighbor 0.3 bin"]
+
+
+# a simple cubic block of 64 aluminium clusters of 10 um (units si, the dusting paper's), no
+# pair style, LAMMPS's default skin (1 mm)
+SI_CLUSTERS = ["units si", "lattice sc 1e-5", "region box block 0 4 0 4 0 4", "create_box 1 box",
+               "create_atoms 1 box", "mass 1 2.338e-12"]
+
+# pair_style mca on a periodic fcc block of 256 elements of diameter 1 (units lj), shaken by
+# 0.01 and barely warm, integrated by fix nve/sphere; {newton} and {dt} to fill in
+MCA_FCC_BLOCK = """
+units lj
+atom_style sphere
+boundary p p p
+comm_modify vel yes
+newton {newton}
+lattice fcc $(sqrt(2.0))
+region box block 0 4 0 4 0 4
+create_box 1 box
+create_atoms 1 box
+reset_atoms id sort yes
+set group all diameter 1.0
+variable phi equal PI/sqrt(18.0)
+pair_style mca fraction ${{phi}} tolerance 0.02
+pair_coeff 1 1 young 1.0 poisson 0.4
+set group all density $(1.0/v_phi)
+displace_atoms all random 0.01 0.01 0.01 4711 units box
+velocity all create 1.0e-4 4712 loop geom
+set group all omega 0.0 0.0 0.0
+neighbor 0.2 bin
+fix move all nve/sphere
+compute rot all erotate/sphere
+variable etot equal pe+ke+c_rot
+timestep {dt}
+thermo_style custom step pe ke c_rot v_etot
+thermo_modify norm no format float %.15g
+"""
+
+
 def state(lmp):
     """pe, the pressure tensor and per-atom forces (by atom ID) after `run 0`."""
     lmp.command("run 0 post no")
@@ -133,3 +200,189 @@ def pair_curve(pair_style, pair_coeff, r, commands=()):
         f = np.array(lmp.gather_atoms("f", 1, 3)).reshape(-1, 2, 3)
         x = np.array(lmp.gather_atoms("x", 1, 3)).reshape(-1, 2, 3)
     return x[:, 1, 0] - x[:, 0, 0], pe.sum(axis=1), f[:, 1, 0]
+
+
+# ---------------------------------------------------------------- tables of input rows
+
+OK = "ok"
+
+
+class InputTable:
+    """Bad, hostile and edge-case input of one style, a row each: (setup commands, the commands
+    under test, the expected outcome), run by check_input().  The commands run one after another
+    after the setup in a LAMMPS instance with the plugin loaded, then `run 0`:
+      * expected an error regex: some command (or the final `run 0`) must stop with a LAMMPS
+        error whose message (the first ~99 characters the Python exception carries) matches; the
+        same instance must then still take commands (`variable alive equal 1`);
+      * expected OK: no error, and the thermo pe and press of the final `run 0` are finite
+        (thermo_modify norm no), as is every other thermo value (the computes').
+    A clear error names the offending argument or keyword (a parameter name, or the plugin's own
+    words for it) and what is wrong.  Generic LAMMPS messages raised from inside the plugin's
+    parsers (utils::numeric/inumeric/bnumeric/logical/bounds: "Expected floating point parameter
+    instead of 'abc'", "Numeric index 3 is out of bounds", "Invalid range string") do not say
+    which parameter of the command is wrong and count as unclear, as do messages that mislead.
+
+    A row that shows a defect keeps the behaviour it should have and is a strict xfail with what
+    it does now (defect).  Rows flagged isolate (NaN, huge values) run in a child process, so
+    that a crash or a hang could not take the test runner down."""
+
+    def __init__(self):
+        self.rows = []
+
+    def row(self, rid, setup, cmds, expect, defect=None, isolate=False):
+        if isinstance(cmds, str):
+            cmds = [cmds]
+        if any(r.id == rid for r in self.rows):
+            raise ValueError(f"input row {rid} is in the table twice")
+        marks = [pytest.mark.xfail(reason=defect, strict=True)] if defect else []
+        self.rows.append(pytest.param(list(setup), list(cmds), expect, isolate, id=rid,
+                                      marks=marks))
+
+
+def observe_input(setup, cmds):
+    """('error', message, command) or ('ok', pe, press, {thermo keyword: value}) of one row, in
+    this process."""
+    with session() as lmp:
+        lmp.commands_list(setup)
+        for cmd in cmds + ["run 0 post no"]:
+            try:
+                lmp.command(cmd)
+            except Exception as e:    # LAMMPS's error, as the library reports it
+                lmp.command("variable alive equal 1")    # the instance still takes commands
+                return ["error", str(e), cmd]
+        return ["ok", lmp.get_thermo("pe"), lmp.get_thermo("press"), lmp.last_thermo()]
+
+
+def observe_input_isolated(setup, cmds, timeout=120):
+    """observe_input() in a child process: a crash or a hang is an outcome too."""
+    code = ("import json, sys, conftest; print('RESULT', "
+            "json.dumps(conftest.observe_input(*json.loads(sys.argv[1]))))")
+    env = dict(os.environ)
+    env.pop("LAMMPS_PLUGIN_PATH", None)
+    try:
+        out = subprocess.run([sys.executable, "-c", code, json.dumps([setup, cmds])], cwd=HERE,
+                             env=env, capture_output=True, text=True, timeout=timeout)
+    except subprocess.TimeoutExpired:
+        return ["hang", timeout]
+    for line in out.stdout.splitlines():
+        if line.startswith("RESULT "):
+            return json.loads(line[len("RESULT "):])
+    return ["crash", out.returncode, (out.stdout + out.stderr)[-2000:]]
+
+
+def check_input(setup, cmds, expect, isolate=False):
+    """Run one row of an InputTable and check its outcome."""
+    got = observe_input_isolated(setup, cmds) if isolate else observe_input(setup, cmds)
+    if expect == OK:
+        assert got[0] == "ok", got
+        assert math.isfinite(got[1]) and math.isfinite(got[2]), got
+        assert all(math.isfinite(v) for v in got[3].values()), got    # the computes' too
+    else:
+        assert got[0] == "error", got
+        assert re.search(expect, got[1]), got
+
+
+# the scenes of the input rows: the four spline laws (a = 1) and their default tails
+SCENE_LAW = {"morse/spline": "1.0 6.0 1.0", "lj/spline": "1.0 1.0",
+             "mie/spline": "1.0 1.0 12 6", "harmonic/spline": "1.0 6.0 1.0"}
+SCENE_TAIL = {"morse/spline": "cut 1.3", "lj/spline": "wagner", "mie/spline": "lagunov 1.4",
+              "harmonic/spline": "lagunov 1.3 start 1.1"}
+
+
+def scene_box(units="lj", ntypes=2, omp=False):
+    """An empty periodic box of ntypes types (units lj: -3..3), thermo not normalised."""
+    return (["package omp 2"] if omp else []) + [
+        f"units {units}", "atom_modify map array", "region box block -3 3 -3 3 -3 3",
+        f"create_box {ntypes} box", "mass * 1.0", "thermo_modify norm no"]
+
+
+def scene_dimer(r=1.05, omp=False, ntypes=2):
+    """Two type-1 atoms r apart along x (a = 1) in scene_box()."""
+    return scene_box(omp=omp, ntypes=ntypes) + ["create_atoms 1 single 0 0 0",
+                                                f"create_atoms 1 single {r!r} 0 0"]
+
+
+def scene_pair(style="morse/spline", tail=None, law=None, omp=False):
+    return [f"pair_style {style}{'/omp' if omp else ''} {tail or SCENE_TAIL[style]}",
+            f"pair_coeff * * {law or SCENE_LAW[style]}"]
+
+
+SCENE_NOBOX = ["units lj"]
+SCENE_BOX = scene_box()
+SCENE_MORSE = scene_dimer() + scene_pair("morse/spline", "cut 1.3")
+SCENE_LINKED = scene_dimer() + scene_pair("morse/spline", "cut 1.3 link 1.1")
+# an empty box -2..2 of one type
+SCENE_EMPTY = ["units lj", "region box block -2 2 -2 2 -2 2", "create_box 1 box", "mass 1 1.0"]
+
+# unit styles: (units, a, D, alpha, mass, skin) of scene_unit_dimer()
+SCENE_UNITS = {
+    "metal": ("metal", 2.5, 0.3, 1.5, 63.5, 1.0),
+    "real": ("real", 3.0, 0.2, 2.0, 27.0, 1.0),
+    "si": ("si", 1.0e-5, 2.46e-6, 3.76e5, 1.0e-12, 2.0e-6),
+}
+
+
+def scene_unit_dimer(name, style):
+    """A dimer 1.05 a apart of the spline style in the unit style name (SCENE_UNITS)."""
+    units, a, d, alpha, mass, skin = SCENE_UNITS[name]
+    law = {"morse/spline": f"{d} {alpha} {a}", "harmonic/spline": f"{d} {alpha} {a}",
+           "lj/spline": f"{d} {a}", "mie/spline": f"{d} {a} 9 6"}[style]
+    tail = "lagunov 1.3 start 1.1" if style == "harmonic/spline" else "cut 1.3"
+    return [f"units {units}", "atom_modify map array",
+            f"region box block {-4 * a} {4 * a} {-4 * a} {4 * a} {-4 * a} {4 * a}",
+            "create_box 1 box", f"mass 1 {mass}", f"neighbor {skin} bin",
+            "thermo_modify norm no", "create_atoms 1 single 0 0 0",
+            f"create_atoms 1 single {1.05 * a!r} 0 0", f"pair_style {style} {tail}",
+            f"pair_coeff 1 1 {law}"]
+
+
+def scene_mca(style="sphere", units="lj", zlo=-3.0, zhi=3.0):
+    """Two touching elements of diameter 1 for pair mca (types 1 and 2 exist, both atoms type
+    1), without the pair style."""
+    return [f"units {units}", f"atom_style {style}", "atom_modify map array",
+            "comm_modify vel yes", f"region box block -3 3 -3 3 {zlo} {zhi}", "create_box 2 box",
+            "create_atoms 1 single 0 0 0", "create_atoms 1 single 1.0 0 0",
+            "thermo_modify norm no"] + (["set group all diameter 1.0"] if style == "sphere" else [])
+
+
+# ---------------------------------------------------------------- cumulative totals
+
+def carried_totals(tmp_path, scene, values, again, n, m, nprocs=1, restart=True):
+    """A scene's cumulative totals (values: LAMMPS references, c_ID[k], f_ID ...) across run
+    boundaries and restart files, from one lmp process on nprocs ranks (each part after a
+    `clear`), as arrays by name:
+      straight_n, straight_nm: `run N+M` uninterrupted, at step N (fix vector) and at its end;
+      split_n, split_nm, boundary: `run N`, `run M pre no` (no setup between: the straight run,
+        to the bit, where nothing changed), `run 0` (a setup at the same step);
+      read_nm: a restart file written after that, read in a fresh instance, `run 0`;
+      mid_nm: `run N+M` writing a restart file at step N (`restart N`), at its end;
+      read_n, resumed_nm: that file read in a fresh instance, `run 0`, then `run M`.
+    scene: the input after `plugin load` up to the run (its computes and fixes defined); again:
+    what a restart file does not carry (fixes, computes, neighbor and comm settings)."""
+    refs = " ".join(values)
+    head = f"plugin load {PLUGIN}\n"
+    outputs = f"thermo_style custom step {refs}\nthermo_modify norm no\n"
+
+    def show(tag, refs=values):
+        return f'print "RESULT {tag} ' + " ".join(f"$({v}:%.17g)" for v in refs) + '"\n'
+
+    def row(k):
+        return [f"f_rec[{k}]" if len(values) == 1 else f"f_rec[{k}][{j + 1}]"
+                for j in range(len(values))]
+
+    def read(name):
+        return f"clear\n{head}read_restart {name}\n{again}\n{outputs}run 0 post no\n"
+
+    script = (head + scene + "\n" + outputs + f"fix rec all vector {n} {refs}\nrun {n + m}\n" +
+              show("straight_n", row(2)) + show("straight_nm") +
+              f"clear\n{head}{scene}\n{outputs}run {n}\n" + show("split_n") +
+              f"run {m} pre no\n" + show("split_nm") + "run 0 post no\n" + show("boundary"))
+    if restart:
+        script += ("write_restart between.restart\n" + read("between.restart") +
+                   show("read_nm") +
+                   f"clear\n{head}{scene}\n{outputs}restart {n} mid.*\nrun {n + m}\n" +
+                   show("mid_nm") + read(f"mid.{n}") + show("read_n") + f"run {m}\n" +
+                   show("resumed_nm"))
+    out = run_lmp(tmp_path, script, nprocs)
+    return {m_.group(1): np.array([float(v) for v in m_.group(2).split()])
+            for m_ in re.finditer(r"^RESULT (\S+) (.+)$", out, re.M)}

@@ -1,9 +1,11 @@
 """compute dust: the fragment partition equals compute cluster/atom (random and fractured
 configurations, serial and MPI), constructed scenes with known answers, maxsize, masses,
-groups, bad input."""
+groups, dump local, bad input (and the table of hostile input, conftest.InputTable)."""
 import numpy as np
 import pytest
-from conftest import PLUGIN, fcc_density, last_thermo, run_lmp, session
+from conftest import (OK, PLUGIN, SCENE_BOX, SCENE_EMPTY, SCENE_LINKED, SCENE_MORSE, SCENE_NOBOX,
+                      SI_CLUSTERS, InputTable, check_input, fcc_density, last_thermo, morse_fcc,
+                      run_lmp, scene_dimer, scene_pair, scene_unit_dimer, session)
 
 # an fcc block stretched to nearest neighbours at 1.3 and shaken (+-0.12): bonds (< 1.25)
 # survive at random, leaving a body, fragments and loose atoms
@@ -373,3 +375,85 @@ def test_bond_distances_follow_fix_adapt(units, unit, law):
             vec, _ = evaluate(lmp)
         counts[case] = vec["nfrag"]
     assert counts == {"a 1": 1, "a 0.9": 2, "adapt 0.9": 2}
+
+
+def test_its_own_cutoff_checks_the_neighbor_skin():
+    """the default skin of units si (1 mm) at cluster scale, with the compute's own cutoff"""
+    with session() as lmp:
+        lmp.commands_list(SI_CLUSTERS + ["pair_style zero 1.2e-5", "pair_coeff * *",
+                                         "neighbor 1e-3 bin", "compute d all dust cutoff 1.2e-5",
+                                         "fix nve all nve", "thermo_style custom step c_d[1]"])
+        with pytest.raises(Exception, match="Compute dust: neighbor skin"):
+            lmp.command("run 0")
+
+
+def test_dump_local_names_the_ten_local_columns(tmp_path):
+    """LAMMPS expands c_ID[*] of a compute that has per-atom and local outputs to its per-atom
+    columns (3); doc/compute_dust.rst says to name the 10 local columns."""
+    cols = " ".join(f"c_d[{k}]" for k in range(1, 11))
+    block = morse_fcc(pair="morse/spline cut 1.2", noise=0)
+    script = "\n".join([f"plugin load {PLUGIN}", *block]) + f"""
+compute d all dust
+dump rows all local 1 rows.txt {cols}
+dump wild all local 1 wild.txt c_d[*]
+run 0
+"""
+    run_lmp(tmp_path, script)
+    rows = np.loadtxt(tmp_path / "rows.txt", skiprows=9, ndmin=2)
+    wild = np.loadtxt(tmp_path / "wild.txt", skiprows=9, ndmin=2)
+    assert rows.shape == (1, 10) and rows[0, 1] == 108    # one fragment of all 108 atoms
+    assert wild.shape == (1, 3)    # LAMMPS's expansion, documented
+
+
+# ---------------------------------------------------------------- hostile input
+
+INPUTS = InputTable()
+row = INPUTS.row
+row("nobox-compute-dust", SCENE_NOBOX, "compute d all dust",
+    r"Run command before simulation box is defined")
+CD = "compute c all dust "
+USE = ["thermo_style custom step pe press c_c[1] c_c[6]", "thermo_modify norm no"]
+for rid, args, expect, defect in [
+    ("cutoff-nothing", "cutoff", r"keyword cutoff needs a value", None),
+    ("cutoff-abc", "cutoff abc", r"cutoff.*abc", None),
+    ("cutoff-nan", "cutoff nan", r"cutoff.*nan", None),
+    ("cutoff-0", "cutoff 0", r"cutoff must be > 0 \(got 0\)", None),
+    ("cutoff--1", "cutoff -1", r"cutoff must be > 0 \(got -1\)", None),
+    ("maxsize-0", "maxsize 0", r"maxsize must be >= 1 \(got 0\)", None),
+    ("maxsize--1", "maxsize -1", r"maxsize must be >= 1 \(got -1\)", None),
+    ("maxsize-1.5", "maxsize 1.5", r"maxsize.*1\.5", None),
+    ("rows-bogus", "rows some", r"rows must be all or dust \(got some\)", None),
+    ("links-and-cutoff", "links cutoff 1.2", r"links and cutoff exclude each other", None),
+    ("unknown-keyword", "cutof 1.2", r"unknown keyword 'cutof'", None),
+    ("cutoff-twice", "cutoff 1.2 cutoff 1.3", r"keyword cutoff given twice", None),
+    ("links-twice", "links links", r"keyword links given twice", None),
+]:
+    row(f"dust-{rid}", SCENE_MORSE, CD + args, expect, defect)
+
+row("dust-rows-twice", SCENE_MORSE, CD + "rows all rows dust", r"keyword rows given twice")  # known
+row("dust-cutoff-1e300", SCENE_MORSE, [CD + "cutoff 1e300"] + USE, r"exceeds the ghost atom range")
+row("dust-links-no-link", SCENE_MORSE, [CD + "links"] + USE, r"links needs a pair style with link")
+row("dust-no-pair", scene_dimer(), [CD.strip()] + USE,
+    r"without the cutoff keyword it needs a pair style")
+row("dust-no-pair-cutoff", scene_dimer(), [CD + "cutoff 1.2"] + USE, r"ghost|cutoff")
+row("dust-empty-group", SCENE_MORSE, ["group none empty", "compute c none dust"] + USE, OK)
+row("dust-zero-atoms", SCENE_BOX + scene_pair("morse/spline"), [CD.strip()] + USE, OK)
+row("dust-links", SCENE_LINKED, [CD + "links maxsize 1 rows dust"] + USE, OK)
+row("dust-units-si", scene_unit_dimer("si", "morse/spline"), [CD + "cutoff 1.2e-5"] + USE, OK)
+row("run-link-to-lj-cut-dust", SCENE_LINKED, ["compute d all dust links",
+                                              "thermo_style custom step pe press c_d[1]",
+                                              "thermo_modify norm no", "run 0 post no",
+                                              "pair_style lj/cut 1.5", "pair_coeff * * 1.0 1.0"],
+    r"Compute dust links needs a pair style with link L")
+# in an empty box
+for rid, args, message in [
+    ("unknown-keyword-foo", "foo", "unknown keyword 'foo'"),
+    ("rows-twice-empty-box", "rows dust rows all", "Compute dust: keyword rows given twice"),
+    ("links-twice-empty-box", "links links", "Compute dust: keyword links given twice"),
+]:
+    row(f"dust-{rid}", SCENE_EMPTY, "compute d all dust " + args, message)
+
+
+@pytest.mark.parametrize("setup,cmds,expect,isolate", INPUTS.rows)
+def test_hostile_input(setup, cmds, expect, isolate):
+    check_input(setup, cmds, expect, isolate)

@@ -1,11 +1,13 @@
 """compute pair/params against the spec's closed forms (section 4) on the analytic path
 (this package's styles) and the numeric path (stock styles through single()), the shock
-table against an independent solution of the c(u) equation (section 5), bad input."""
+table against an independent solution of the c(u) equation (section 5), bad input (and the
+table of hostile input, conftest.InputTable)."""
 import math
 
 import numpy as np
 import pytest
-from conftest import session
+from conftest import (OK, SCENE_BOX, SCENE_LINKED, SCENE_MORSE, SCENE_NOBOX, InputTable,
+                      check_input, scene_dimer, scene_pair, scene_unit_dimer, session)
 from spec_laws import Law
 
 NAMES = ["a", "b", "sigma", "D", "fstar", "C", "eps", "kstar", "kv", "k2", "Gamma", "omega0",
@@ -283,3 +285,66 @@ def test_laws_without_parameters(pair, message):
                            "thermo_style custom step c_p[1]"])
         with pytest.raises(Exception, match=message):
             lmp.command("run 0")
+
+
+# ---------------------------------------------------------------- hostile input
+
+INPUTS = InputTable()
+row = INPUTS.row
+row("nobox-compute-params", SCENE_NOBOX, "compute p all pair/params 1 1", r"box")
+CP = "compute c all pair/params "
+PUSE = ["thermo_style custom step pe press c_c[1] c_c[14]", "thermo_modify norm no"]
+for rid, args, expect, defect in [
+    ("one-type", "1", r"expected compute ID group pair/params I J", None),
+    ("type-0", "0 1", r"atom type 0 is out of range 1-2", None),
+    ("type-ntypes+1", "1 3", r"atom type 3 is out of range 1-2", None),
+    ("type-star", "* 1", r"[Tt]ype.*\*", None),
+    ("type-range", "2*1 1", r"[Tt]ype.*2\*1", None),
+    ("type-abc", "abc 1", r"[Tt]ype.*abc", None),
+    ("type-float", "1.0 1", r"[Tt]ype.*1\.0", None),
+    ("mass-0", "1 1 mass 0", r"mass must be > 0 \(got 0\)", None),
+    ("mass--1", "1 1 mass -1", r"mass must be > 0 \(got -1\)", None),
+    ("mass-nan", "1 1 mass nan", r"mass.*nan", None),
+    ("mass-nothing", "1 1 mass", r"keyword mass needs a value", None),
+    ("rc-0", "1 1 rc 0", r"rc must be > 0 \(got 0\)", None),
+    ("rc-abc", "1 1 rc abc", r"\brc\b.*abc", None),
+    ("lattice-hex", "1 1 lattice hex", r"unknown lattice 'hex'", None),
+    ("u-nothing", "1 1 u", r"keyword u needs at least one speed \(got nothing\)", None),
+    ("u-abc", "1 1 u abc", r"keyword u needs at least one speed \(got 'abc'\)", None),
+    ("u-0", "1 1 u 0", r"loading speed u must be a finite number > 0 \(got 0\)", None),
+    ("u--1", "1 1 u -1", r"loading speed u must be a finite number > 0 \(got -1\)", None),
+    ("u-nan", "1 1 u nan", r"loading speed u must be a finite number > 0 \(got nan\)", None),
+    ("u-inf", "1 1 u inf", r"loading speed u must be a finite number > 0 \(got inf\)", None),
+    ("u-1e309", "1 1 u 1e309", r"finite number > 0 \(got 1e309\)", None),
+    ("unknown-keyword", "1 1 lattic fcc", r"unknown keyword 'lattic'", None),
+]:
+    row(f"params-{rid}", SCENE_MORSE, CP + args, expect, defect)
+
+row("params-rc-0.5", SCENE_MORSE, [CP + "1 1 rc 0.5"] + PUSE, r"rc must be > 1",
+    None)
+row("params-mass-twice", SCENE_MORSE, CP + "1 1 mass 1 mass 2", r"keyword mass given twice",
+    None)
+row("params-u-twice", SCENE_MORSE, CP + "1 1 u 1 u 2", r"keyword u given twice",
+    None)
+row("params-no-pair", scene_dimer(), [CP + "1 1"] + PUSE, r"pair/params needs a pair style")
+row("params-stock-lj", scene_dimer(), ["pair_style lj/cut 2.5", "pair_coeff * * 1.0 1.0",
+                                       CP + "1 1 lattice fcc u 0.5 1"] + PUSE, OK)
+row("params-pair-zero", scene_dimer(), ["pair_style zero 2.5", "pair_coeff * *", CP + "1 1"] + PUSE,
+    r"pair/params.*(zero|no interaction|law|minimum|equilibrium)")
+row("params-link", SCENE_LINKED, [CP + "1 1"] + PUSE, OK)
+row("params-harmonic-u-beyond-c0", scene_dimer() + scene_pair("harmonic/spline"),
+    [CP + "1 1 u 1e6"] + PUSE, OK)
+row("params-zero-atoms", SCENE_BOX + scene_pair("mie/spline"),
+    [CP + "1 2 mass 2 rc 1.3 u 1"] + PUSE, OK)
+row("params-units-metal", scene_unit_dimer("metal", "lj/spline"), [CP + "1 1 lattice fcc u 100"] +
+    PUSE, OK)
+
+row("run-hybrid-pair-params", scene_dimer(), [
+    "pair_style hybrid/overlay lj/cut 1.5 morse/spline cut 1.3 link 1.1",
+    "pair_coeff * * lj/cut 0.1 1.0", "pair_coeff * * morse/spline 1.0 6.0 1.0",
+    "compute c all pair/params 1 1"], r"pair style hybrid/overlay has no single\(\)")
+
+
+@pytest.mark.parametrize("setup,cmds,expect,isolate", INPUTS.rows)
+def test_hostile_input(setup, cmds, expect, isolate):
+    check_input(setup, cmds, expect, isolate)

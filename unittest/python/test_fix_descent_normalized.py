@@ -4,12 +4,16 @@ survives restart, converged states equal LAMMPS's minimize on the same linked ne
 (in three unit styles), a wall stops an atom where the forces balance, 1 and 2 ranks agree,
 fix halt stops the iteration, bad input stops with an error naming the argument.  Oracles:
 the force direction and h (closed form), an independent recurrence, stock minimize, the
-stock wall's balance point, serial against MPI runs."""
+stock wall's balance point, serial against MPI runs.  A restart read by a fix with other
+inertia starts the memory afresh; the table of hostile input (conftest.InputTable)."""
 import math
+import re
 
 import numpy as np
 import pytest
-from conftest import PLUGIN, run_lmp, session
+from conftest import (OK, PLUGIN, SCENE_BOX, SCENE_EMPTY, SCENE_MORSE, SCENE_NOBOX, InputTable,
+                      carried_totals, check_input, morse_fcc, run_lmp, scene_dimer, scene_pair,
+                      scene_unit_dimer, session)
 
 # the law of the paper (mie/spline n = 4k, m = 2k, k = 0.25) in three unit styles: D, a
 UNITS = {"lj": (0.25, 1.0), "metal": (0.25, 2.0), "si": (2.5e-9, 1.0e-3)}
@@ -184,6 +188,23 @@ def test_restart_continues_the_inertia_history(tmp_path):
         read_dump(tmp_path / "straight.txt"), abs=1e-12)
 
 
+ITERATION = "fix d all descent/normalized h 0.01 decay 0.99 inertia 3 0.5\n"
+
+
+@pytest.mark.parametrize("nprocs", [1, 2])
+def test_step_length_carries_across_run_boundaries_and_restart_files(tmp_path, nprocs):
+    """h, decayed over the iterations so far: run N + run M (with or without a setup between)
+    ends at run N+M's h, and a restart file written between runs or during one (restart N),
+    read by a fix with the same ID, goes on from the uninterrupted run's h at that step."""
+    r = carried_totals(tmp_path, "\n".join(morse_fcc()) + "\n" + ITERATION, ["f_d"],
+                       "neighbor 0.3 bin\n" + ITERATION, 50, 50, nprocs)
+    assert 0.01 > r["straight_n"][0] > r["straight_nm"][0] > 0
+    for name in ("split_nm", "boundary", "read_nm", "mid_nm", "resumed_nm"):
+        assert r[name] == pytest.approx(r["straight_nm"], rel=1e-12), name
+    for name in ("split_n", "read_n"):
+        assert r[name] == pytest.approx(r["straight_n"], rel=1e-12), name
+
+
 def test_wall_stops_the_atom_where_the_forces_balance():
     eps, cut, push, hmin = 5.0, 1.0, 2.0, 1e-8
     with session() as lmp:
@@ -243,3 +264,106 @@ def test_a_second_time_integrator_on_the_same_atoms_is_an_error(other):
         lmp.command(f"fix n all {other}")
         with pytest.raises(Exception, match="Fix descent/normalized d and time integrator fix n"):
             lmp.command("run 1")
+
+
+def printed(out):
+    """The 'RESULT name value' lines a script printed, as floats."""
+    return {m.group(1): float(m.group(2)) for m in re.finditer(r"^RESULT (\S+) (\S+)$", out, re.M)}
+
+
+@pytest.mark.parametrize("nprocs", [1, 2])
+@pytest.mark.parametrize("first,second", [("inertia 3 0.5", ""), ("", "inertia 3 0.5"),
+                                          ("inertia 3 0.5", "inertia 5 0.5")])
+def test_restart_read_by_a_fix_with_other_inertia(tmp_path, nprocs, first, second):
+    setup = "\n".join([f"plugin load {PLUGIN}", *morse_fcc(), ""])
+    run_lmp(tmp_path, setup + f"fix d all descent/normalized h 0.002 {first}\nrun 20\n"
+            "write_restart d.restart\n", nprocs)
+    out = run_lmp(tmp_path, f"plugin load {PLUGIN}\nread_restart d.restart\nneighbor 0.3 bin\n"
+                  f"fix d all descent/normalized h 0.002 {second}\nrun 20\n"
+                  'print "RESULT pe $(pe)"\n', nprocs, name="in.b")
+    assert np.isfinite(printed(out)["pe"])
+
+
+def test_inertia_with_timestep_0_is_an_error():
+    with session() as lmp:
+        lmp.commands_list(SCENE_EMPTY + ["create_atoms 1 single 0 0 0",
+                                         "create_atoms 1 single 1.1 0 0",
+                                         "pair_style morse/spline cut 1.3",
+                                         "pair_coeff * * 1.0 6.0 1.0",
+                                         "fix d all descent/normalized h 0.01 inertia 3 0.5",
+                                         "timestep 0"])
+        with pytest.raises(Exception, match="inertia needs a time step > 0 \\(got 0\\)"):
+            lmp.command("run 1")
+
+
+# ---------------------------------------------------------------- hostile input
+
+INPUTS = InputTable()
+row = INPUTS.row
+row("nobox-fix-descent", SCENE_NOBOX, "fix d all descent/normalized h 0.1",
+    "Fix descent/normalized command before simulation box is defined")
+D = "fix d all descent/normalized "
+for rid, args, expect, defect in [
+    ("no-args", "", r"expected fix ID group descent/normalized h H", None),
+    ("h-nothing", "h", r"expected fix ID group descent/normalized h H", None),
+    ("H-uppercase", "H 0.1", r"expected fix ID group descent/normalized h H", None),
+    ("h-abc", "h abc", r"\bh\b.*abc", None),
+    ("h-nan", "h nan", r"\bh\b.*nan", None),
+    ("h-inf", "h inf", r"\bh\b.*inf", None),
+    ("h-1e309", "h 1e309", r"\bh\b.*1e309", None),
+    ("h--0", "h -0", r"h must be > 0 \(got -0\)", None),
+    ("h-0", "h 0", r"h must be > 0 \(got 0\)", None),
+    ("decay-0", "h 0.1 decay 0", r"decay F must be in \(0,1\] \(got 0\)", None),
+    ("decay-1.5", "h 0.1 decay 1.5", r"decay F must be in \(0,1\] \(got 1.5\)", None),
+    ("decay-nan", "h 0.1 decay nan", r"decay.*nan", None),
+    ("min--1", "h 0.1 min -1", r"min Hmin must be in \[0,h\] \(got -1\)", None),
+    ("min-above-h", "h 0.1 min 1", r"min Hmin must be in \[0,h\] \(got 1\)", None),
+    ("inertia-0", "h 0.1 inertia 0 0.5", r"inertia M must be >= 1 \(got 0\)", None),
+    ("inertia-1001", "h 0.1 inertia 1001 0.5", r"inertia M must be an integer <= 1000", None),
+    ("inertia-one-value", "h 0.1 inertia 3", r"keyword inertia needs 2 values", None),
+    ("inertia-K-1", "h 0.1 inertia 3 1", r"inertia K must be in \[0,1\) \(got 1\)", None),
+    ("inertia-K--0.1", "h 0.1 inertia 3 -0.1", r"inertia K must be in \[0,1\) \(got -0.1\)",
+     None),
+    ("inertia-K-nan", "h 0.1 inertia 3 nan", r"inertia K.*nan|K.*nan", None),
+    ("decay-twice", "h 0.1 decay 0.9 decay 0.8", r"keyword decay given twice", None),
+    ("unknown-keyword", "h 0.1 foo 1", r"unknown keyword 'foo'", None),
+    ("wrong-order", "decay 0.9 h 0.1", r"expected fix ID group descent/normalized h H", None),
+]:
+    row(f"descent-{rid}", SCENE_MORSE, D + args, expect, defect)
+
+row("descent-h-1e308", SCENE_MORSE, [D + "h 1e308", "run 2 post no"],
+    r"h = 1e\+308 must be smaller than the box", isolate=True)    # known, fixed
+row("descent-inertia-3.0", SCENE_MORSE, [D + "h 0.01 inertia 3.0 0.5", "run 3 post no"], OK)
+row("descent-h-tiny", SCENE_MORSE, [D + "h 1e-300 decay 1e-300", "run 3 post no"], OK)
+row("descent-with-nve", SCENE_MORSE, ["fix n all nve", D + "h 0.01"], r"nve|descent/normalized.*n\b")
+row("descent-empty-group", SCENE_MORSE, ["group none empty", "fix d none descent/normalized h 0.01",
+                                         "run 3 post no"], OK)
+row("descent-zero-atoms", SCENE_BOX + scene_pair("morse/spline"), [D + "h 0.01", "run 3 post no"], OK)
+row("descent-respa", scene_dimer(), ["run_style respa 2 2", D + "h 0.01"],
+    r"[Ff]ix descent/normalized.*(respa|verlet)")
+row("descent-fix_modify", SCENE_MORSE, [D + "h 0.01", "fix_modify d energy yes"],
+    r"descent/normalized does not support fix_modify energy")
+row("descent-minimize", SCENE_MORSE, [D + "h 0.01", "minimize 0 0 10 100"], OK)
+row("descent-no-pair", scene_dimer(), [D + "h 0.01", "run 3 post no"], OK)
+row("descent-overlap", scene_dimer(r=0.0) + scene_pair("morse/spline"), [D + "h 0.01"],
+    r"atoms 1 and 2 are 0 apart")
+row("descent-units-si", scene_unit_dimer("si", "morse/spline"), [D + "h 1e-8 decay 0.9 min 1e-12",
+                                                                 "run 3 post no"], OK)
+row("descent-omp", scene_dimer(omp=True) + scene_pair("lj/spline", omp=True),
+    [D + "h 0.01 inertia 2 0.5", "run 3 post no"], OK)
+# in an empty box
+for rid, cmds, message in [
+    ("inertia-M-int-max", [D + "h 0.1 inertia 2147483647 0.5"],
+     "inertia M must be an integer <= 1000 \\(got 2147483647\\)"),
+    ("inertia-M-1e8", [D + "h 0.1 inertia 1e8 0.5"], "inertia M must be an integer <= 1000"),
+    ("inertia-M-2.5", [D + "h 0.1 inertia 2.5 0.5"], "inertia M must be an integer"),
+    ("decay-twice-empty-box", [D + "h 0.1 decay 0.5 decay 0.9"], "keyword decay given twice"),
+    ("h-1e308-empty-box", ["pair_style morse/spline cut 1.2", "pair_coeff * * 1.0 6.0 1.0",
+                           D + "h 1e308", "run 1"], "h = 1e\\+308 must be smaller than the box"),
+]:
+    row(f"descent-{rid}", SCENE_EMPTY, cmds, message)
+
+
+@pytest.mark.parametrize("setup,cmds,expect,isolate", INPUTS.rows)
+def test_hostile_input(setup, cmds, expect, isolate):
+    check_input(setup, cmds, expect, isolate)

@@ -1,12 +1,16 @@
 """fix viscous/relative against independent oracles: conservation laws, the closed-form
 decay of a pair, pair_style dpd/tstat at zero temperature, fix viscous, the energy
-balance, serial vs MPI, restart, stability and bad input."""
+balance, serial vs MPI, restart, stability, the pairs a pair style with link L holds bonded
+(free flight as the oracle for the others), and bad input (the table of hostile input,
+conftest.InputTable)."""
 import ctypes
 import math
 
 import numpy as np
 import pytest
-from conftest import PLUGIN, fcc_block, last_thermo, run_lmp, session
+from conftest import (OK, PLUGIN, SCENE_BOX, SCENE_EMPTY, SCENE_MORSE, SCENE_NOBOX, SCENE_UNITS,
+                      SI_CLUSTERS, InputTable, carried_totals, check_input, fcc_block, last_thermo,
+                      morse_fcc, run_lmp, scene_dimer, scene_pair, scene_unit_dimer, session)
 
 
 def arrays(lmp, name, n=3):
@@ -212,6 +216,30 @@ def test_fix_modify_energy_adds_removed_energy_to_pe():
         lmp.commands_list(["fix_modify damp energy yes", "run 0 post no"])
         assert lmp.get_thermo("pe") == pytest.approx(pe_plain + lmp.extract_fix("damp", 0, 0),
                                                      rel=1e-12)
+
+
+# the energy removed, a cumulative total, in a thermalised Morse block
+DAMPED = "\n".join(morse_fcc() + ["velocity all create 0.3 4712 loop geom", "timestep 0.002", ""])
+DAMPING = "fix 1 all nve\nfix v all viscous/relative gamma 2.0\n"
+
+
+@pytest.mark.parametrize("nprocs", [1, 2])
+def test_removed_energy_carries_across_run_boundaries_and_restart_files(tmp_path, nprocs):
+    """run N + run M pre no (the straight run's steps) ends with run N+M's energy removed and
+    a run 0 (a setup) at the boundary keeps it; a restart file written between runs or during
+    one (restart N) gives it back to a fix with the same ID in a fresh instance, the
+    uninterrupted run's at that step.  A run resumed from the file parts from the straight one
+    as a split run does (the setup damps the full-step velocities: measured 1.1e-7)."""
+    r = carried_totals(tmp_path, DAMPED + DAMPING, ["f_v"], "neighbor 0.3 bin\n" + DAMPING,
+                       100, 100, nprocs)
+    assert 0 < r["straight_n"][0] < r["straight_nm"][0]
+    assert r["split_n"] == pytest.approx(r["straight_n"], rel=1e-12)
+    assert r["split_nm"] == pytest.approx(r["straight_nm"], rel=1e-12)
+    assert r["boundary"] == pytest.approx(r["split_nm"], rel=1e-12)
+    assert r["read_nm"] == pytest.approx(r["straight_nm"], rel=1e-12)
+    assert r["mid_nm"] == pytest.approx(r["straight_nm"], rel=1e-12)
+    assert r["read_n"] == pytest.approx(r["straight_n"], rel=1e-12)
+    assert r["resumed_nm"] == pytest.approx(r["straight_nm"], rel=1e-6)
 
 
 def test_removed_energy_survives_restart(tmp_path):
@@ -719,3 +747,174 @@ def test_run_pre_no_continues_the_straight_run_exactly(units, damping):
     (f1, v1, e1), (f2, v2, e2) = split_runs(units, damping, pre="no")
     assert e1 > 0 and e2 == e1
     assert np.array_equal(f1, f2) and np.array_equal(v1, v2)
+
+
+def test_normal_mode_skips_coincident_atoms_without_nan():
+    with session() as lmp:
+        lmp.commands_list(["units lj", "region box block 0 4 0 4 0 4", "create_box 1 box",
+                           "mass 1 1.0", "neighbor 0.3 bin", "create_atoms 1 single 1.0 1.0 1.0",
+                           "create_atoms 1 single 1.0 1.0 1.0", "create_atoms 1 single 1.5 1.0 1.0",
+                           "pair_style zero 1.0", "pair_coeff * *", "set atom 1 vx 1.0",
+                           "set atom 2 vx -1.0", "set atom 3 vx 0.5", "fix nve all nve",
+                           "fix d all viscous/relative gamma 0.5 mode normal", "timestep 0.001",
+                           "run 10 post no"])
+        v = np.array(lmp.gather_atoms("v", 1, 3)).reshape(-1, 3)
+        removed = lmp.numpy.extract_fix("d", 0, 0)
+    assert np.all(np.isfinite(v)) and np.isfinite(removed)
+    assert v.sum(axis=0) == pytest.approx([0.5, 0, 0], abs=1e-14)    # momentum conserved
+    assert v[2, 0] < 0.5 and removed > 0    # the pairs with a normal are damped
+
+
+def test_respa_is_refused():
+    # with a stock pair style: the spline styles refuse respa themselves
+    # (test_pair_spline_errors.py)
+    with session() as lmp:
+        lmp.commands_list(["units lj", "region box block 0 4 0 4 0 4", "create_box 1 box",
+                           "mass 1 1.0", "neighbor 0.3 bin", "create_atoms 1 single 1.0 1.0 1.0",
+                           "pair_style morse 1.2", "pair_coeff 1 1 1.0 6.0 1.0", "fix nve all nve",
+                           "fix d all viscous/relative gamma 0.5", "run_style respa 2 2"])
+        with pytest.raises(Exception, match="does not support run_style respa"):
+            lmp.command("run 1")
+
+
+def test_its_own_cutoff_checks_the_neighbor_skin():
+    """the default skin of units si (1 mm) at cluster scale, with the fix's own cutoff"""
+    with session() as lmp:
+        lmp.commands_list(SI_CLUSTERS + ["pair_style zero 1.2e-5", "pair_coeff * *",
+                                         "neighbor 1e-3 bin",
+                                         "fix d all viscous/relative gamma 1e6 cutoff 1.2e-5",
+                                         "fix nve all nve"])
+        with pytest.raises(Exception, match="Fix viscous/relative: neighbor skin"):
+            lmp.command("run 0")
+
+
+# ---------------------------------------------------------------- pairs held by link L
+
+DIMER_UNITS = {"lj": (1.0, 1.0, 1.0, 0.001), "metal": (0.3429, 2.866, 26.98, 0.0005)}    # D a m dt
+
+
+def dimer_ke(style, r, v, units="lj", steps=40, damp="gamma 5.0"):
+    """ke after `steps` of two atoms r a apart moving with -v and +v (a per time unit) along
+    their axis, Morse alpha a = 6 in the given unit style."""
+    d, a, m, dt = DIMER_UNITS[units]
+    rate = float(damp.split()[1]) / (1.0 if units == "lj" else 0.1)    # G per time unit
+    with session() as lmp:
+        lmp.commands_list([f"units {units}",
+                           f"region box block {-5 * a} {5 * a} {-5 * a} {5 * a} {-5 * a} {5 * a} units box",
+                           "create_box 1 box", f"mass 1 {m}", "create_atoms 1 single 0 0 0 units box",
+                           f"create_atoms 1 single {r * a} 0 0 units box", f"pair_style {style}",
+                           f"pair_coeff * * {d} {6.0 / a} {a}", f"neighbor {0.3 * a} bin",
+                           "group one id 1", "group two id 2",
+                           f"velocity one set {-v * a} 0 0 units box",
+                           f"velocity two set {v * a} 0 0 units box",
+                           "fix 1 all nve", f"fix 2 all viscous/relative gamma {rate}",
+                           f"timestep {dt}", "thermo_modify norm no", "run 0"])
+        ke0 = lmp.get_thermo("ke")
+        lmp.command(f"run {steps}")
+        return ke0, lmp.get_thermo("ke"), lmp.get_thermo("pe")
+
+
+@pytest.mark.parametrize("units", list(DIMER_UNITS))
+def test_viscous_relative_leaves_unlinked_pairs_alone(units):
+    # 1.2 a apart: beyond L a = 1.05 a (never linked), inside Rc a = 1.3 a; moving apart
+    ke0, ke, pe = dimer_ke("morse/spline cut 1.3 link 1.05", 1.2, 0.1, units)
+    assert pe == 0 and ke == ke0    # no force, no damping: free flight
+    ke0_d, ke_d, pe_d = dimer_ke("morse/spline cut 1.3", 1.2, 0.1, units)
+    assert pe_d < 0 and ke_d != ke0_d    # by distance the same pair is bonded: it interacts
+
+
+@pytest.mark.parametrize("units", list(DIMER_UNITS))
+def test_viscous_relative_damps_linked_pairs_as_distance_bonds(units):
+    a = dimer_ke("morse/spline cut 1.3 link 1.05", 1.0, 0.05, units)
+    b = dimer_ke("morse/spline cut 1.3", 1.0, 0.05, units)
+    assert a[1] < 0.9 * a[0] and a[1] == pytest.approx(b[1], rel=1e-12)
+
+
+def test_viscous_relative_cutoff_does_not_apply_under_link():
+    with session() as lmp:
+        lmp.commands_list(["units lj", "region box block -5 5 -5 5 -5 5", "create_box 1 box",
+                           "mass 1 1.0", "create_atoms 1 single 0 0 0",
+                           "pair_style morse/spline cut 1.3 link 1.05", "pair_coeff * * 1.0 6.0 1.0",
+                           "fix 2 all viscous/relative gamma 1.0 cutoff 1.2"])
+        with pytest.raises(Exception, match="keyword cutoff does not apply under a pair style "
+                                            "with link L"):
+            lmp.command("run 0")
+
+
+# ---------------------------------------------------------------- hostile input
+
+INPUTS = InputTable()
+row = INPUTS.row
+row("nobox-fix-viscous", SCENE_NOBOX, "fix v all viscous/relative gamma 1.0",
+    "Fix viscous/relative command before simulation box is defined")
+V = "fix v all viscous/relative "
+for rid, args, expect, defect in [
+    ("no-args", "", r"expected fix ID group viscous/relative gamma G \| J J", None),
+    ("gamma-nothing", "gamma", r"expected fix ID group viscous/relative", None),
+    ("style-G", "G 1.0", r"unknown style 'G' \(expected gamma or J\)", None),
+    ("gamma-abc", "gamma abc", r"gamma.*abc", None),
+    ("gamma-nan", "gamma nan", r"gamma.*nan", None),
+    ("gamma-inf", "gamma inf", r"gamma.*inf", None),
+    ("gamma-1e309", "gamma 1e309", r"gamma.*1e309", None),
+    ("gamma--0", "gamma -0", r"gamma must be > 0 \(got -0\)", None),
+    ("gamma-0", "gamma 0", r"gamma must be > 0 \(got 0\)", None),
+    ("J--1", "J -1", r"J must be > 0 \(got -1\)", None),
+    ("mode-sideways", "gamma 1.0 mode sideways", r"unknown mode 'sideways'", None),
+    ("mode-nothing", "gamma 1.0 mode", r"keyword mode needs a value", None),
+    ("weight-bogus", "gamma 1.0 weight gauss", r"unknown weight 'gauss'", None),
+    ("weight-twice", "gamma 1.0 weight dpd weight none", r"keyword weight given twice", None),
+    ("mode-twice", "gamma 1.0 mode full mode normal", r"keyword mode given twice", None),
+    ("cutoff-0", "gamma 1.0 cutoff 0", r"cutoff must be > 0 \(got 0\)", None),
+    ("cutoff--1", "gamma 1.0 cutoff -1", r"cutoff must be > 0 \(got -1\)", None),
+    ("cutoff-abc", "gamma 1.0 cutoff abc", r"cutoff.*abc", None),
+    ("unknown-keyword", "gamma 1.0 foo 1", r"unknown keyword 'foo'", None),
+    ("wrong-order", "mode normal gamma 1.0", r"unknown style 'mode'", None),
+    ("extra-number", "gamma 1.0 2.0", r"unknown keyword '2.0'|extra argument '2.0'",
+     None),
+]:
+    row(f"viscous-{rid}", SCENE_MORSE, V + args, expect, defect)
+
+row("viscous-cutoff-1e300", SCENE_MORSE, V + "gamma 1.0 cutoff 1e300", r"ghost")
+row("viscous-J-stock-pair", scene_dimer(), ["pair_style lj/cut 1.5", "pair_coeff * * 1.0 1.0",
+                                            V + "J 50"], r"J .*(stiffness|C\b)")
+row("viscous-no-pair", scene_dimer(), [V + "gamma 1.0"], r"viscous/relative.*pair style")
+row("viscous-no-pair-cutoff", scene_dimer(), [V + "gamma 1.0 cutoff 1.2"], r"ghost|cutoff")
+row("viscous-empty-group", SCENE_MORSE, ["group none empty", "fix v none viscous/relative gamma 1.0"],
+    OK)
+row("viscous-zero-atoms", SCENE_BOX + scene_pair("morse/spline"), [V + "J 50"], OK)
+row("viscous-respa", scene_dimer(), ["pair_style lj/cut 1.5", "pair_coeff * * 1.0 1.0",
+                                     "run_style respa 2 2", V + "gamma 1.0"],
+    r"[Ff]ix viscous/relative.*respa")
+row("viscous-J-tiny", SCENE_MORSE, ["velocity all create 0.1 4711", "fix n all nve", V + "J 1e-300",
+                                    "timestep 0.001", "run 5 post no"],
+    r"viscous/relative.*(J|G|time step|stab)", None,
+    isolate=True)
+row("viscous-gamma-huge", SCENE_MORSE, ["velocity all create 0.1 4711", "fix n all nve",
+                                        V + "gamma 1e300", "timestep 0.001", "run 5 post no"],
+    r"viscous/relative: G x bonds x dt = 1e\+300", None, isolate=True)
+row("viscous-J-huge", SCENE_MORSE, ["velocity all create 0.1 4711", "fix n all nve", V + "J 1e300",
+                                    "run 5 post no"], OK)
+row("viscous-normal-overlap", scene_dimer(r=0.0), ["pair_style zero 1.5", "pair_coeff * *",
+                                                   "velocity all create 0.1 4711", "fix n all nve",
+                                                   V + "gamma 1.0 mode normal cutoff 1.2",
+                                                   "run 5 post no"], OK)
+# LAMMPS: "it is an error to use pre no" after a change; the fix has no forces of the step
+# before to kick with (was a crash: fd never allocated)
+row("viscous-minimize-then-run-pre-no", SCENE_MORSE,
+    ["fix n all nve", V + "J 50", "minimize 0 1e-8 20 40", "run 10 pre no"],
+    r"no damping forces of step \d+ for its second half kick: run \.\.\. pre no", isolate=True)
+for u in SCENE_UNITS:
+    row(f"viscous-units-{u}", scene_unit_dimer(u, "morse/spline"), ["fix n all nve", V + "J 50",
+                                                                    "run 3 post no"], OK)
+row("viscous-fix_modify", SCENE_MORSE, ["velocity all create 0.1 4711", "fix n all nve",
+                                        V + "gamma 1.0", "fix_modify v energy yes virial yes",
+                                        "run 5 post no"], OK)
+row("viscous-omp", scene_dimer(omp=True) + scene_pair("morse/spline", omp=True),
+    ["fix n all nve", V + "gamma 1.0 mode normal weight dpd", "run 3 post no"], OK)
+row("viscous-mode-twice-empty-box", SCENE_EMPTY, V + "gamma 1.0 mode normal mode full",
+    "keyword mode given twice")
+
+
+@pytest.mark.parametrize("setup,cmds,expect,isolate", INPUTS.rows)
+def test_hostile_input(setup, cmds, expect, isolate):
+    check_input(setup, cmds, expect, isolate)

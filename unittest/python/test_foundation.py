@@ -1,11 +1,15 @@
 """Foundation: the plugin loads by path in lmp and in Python, `plugin list` shows every
-style, a missing file fails clearly in our harness, auto-loading works, and a Morse run
-under MPI gives the serial energy."""
+style, a missing file fails clearly in our harness, auto-loading works, a Morse run
+under MPI gives the serial energy, and the core file needs no symbol of LAMMPS's OPENMP
+package (it loads alone; the /omp styles live in a second file)."""
 import os
 import re
+import shutil
+import subprocess
 
 import pytest
-from conftest import ALL_PAIR_STYLES, COMPUTE_STYLES, FIX_STYLES, LMP, PAIR_STYLES, PLUGIN, last_thermo, load_plugin, run_lmp, session
+from conftest import (ALL_PAIR_STYLES, COMPUTE_STYLES, FIX_STYLES, PLUGIN, last_thermo,
+                      load_plugin, run_lmp, session)
 
 MORSE_BLOCK = """
 units lj
@@ -68,3 +72,29 @@ def test_stock_morse_mpi_equals_serial(tmp_path, nprocs):
     parallel = last_thermo(run_lmp(tmp_path, script, nprocs), ["PotEng", "TotEng", "Press"])
     assert serial[0] < 0
     assert parallel == pytest.approx(serial, rel=1e-10)
+
+
+# the plugin's split into a core file and an /omp file (doc/Build.rst)
+
+def undefined_symbols(path):
+    out = subprocess.run(["nm", "-D", "--undefined-only", "-C", path], capture_output=True,
+                         text=True, check=True).stdout
+    return out
+
+
+def test_core_plugin_needs_no_openmp_package_symbols():
+    omp = os.path.join(os.path.dirname(PLUGIN), "clusterdyn_omp.so")
+    assert "ThrOMP" not in undefined_symbols(PLUGIN)
+    assert "FixOMP" not in undefined_symbols(PLUGIN)
+    assert "ThrOMP" in undefined_symbols(omp)    # the /omp styles live there
+
+
+def test_core_plugin_alone_loads_its_styles(tmp_path):
+    alone = tmp_path / "clusterdynplugin.so"
+    shutil.copy(PLUGIN, alone)
+    log = tmp_path / "log.lammps"
+    with session("-log", str(log), plugin=False) as lmp:
+        lmp.command(f"plugin load {alone}")
+        assert lmp.has_style("pair", "morse/spline") and lmp.has_style("compute", "dust")
+        assert not lmp.has_style("pair", "morse/spline/omp")
+    assert "clusterdyn_omp.so not found; the /omp pair styles are not loaded" in log.read_text()

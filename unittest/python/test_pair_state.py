@@ -1,29 +1,23 @@
 """Persistent pair state (links) under everything LAMMPS does to atoms, on 1 and 2 ranks: a
 restart written right after a run, atom deletion and ID renumbering, minimization trial points,
 rerun, empty processors, unfix of the internal fix, a re-issued pair_style, a linked pair that
-leaves the neighbour list, and compute dust evaluated again at the same step.  Oracles: the
-straight run against the split one, compute coord/atom at L a (the pairs a fresh setup links),
-the Morse minimum, the original run's link counts frame by frame, the serial run."""
+leaves the neighbour list, and compute dust evaluated again at the same step; the pair
+styles' cumulative totals (compute pair: links broken and formed, the energy of those changes,
+pair mca's damage, plastic and friction work) across run boundaries and restart files.  Oracles:
+the straight run against the split one, compute coord/atom at L a (the pairs a fresh setup
+links), the Morse minimum, the original run's link counts frame by frame, the serial run, the
+uninterrupted run's totals at the step of the boundary or the restart file."""
 import os
 import re
 import subprocess
 
 import numpy as np
 import pytest
-from conftest import LMP, PLUGIN, run_lmp, session
+from conftest import LMP, PLUGIN, carried_totals, morse_dimer, morse_fcc, run_lmp, session
 
-BLOCK = """plugin load {plugin}
-units lj
-{map}
-lattice fcc 1.41421356
-region box block 0 4 0 4 0 4
-create_box 1 box
-create_atoms 1 box
-mass 1 1.0
-pair_style morse/spline cut 1.2 link 1.05
-pair_coeff * * 1.0 6.0 1.0
-neighbor 0.2 bin
-compute p all pair morse/spline
+LINKED = "pair_style morse/spline cut 1.2 link 1.05\npair_coeff * * 1.0 6.0 1.0\nneighbor 0.2 bin\n"
+# the outputs of a linked fcc block: links, broken links and links unlike coord/atom's at L a
+OUTPUTS = """compute p all pair morse/spline
 compute l all links/atom
 compute ls all reduce sum c_l
 compute c all coord/atom cutoff 1.05
@@ -39,8 +33,10 @@ def results(out):
     return {m.group(1): float(m.group(2)) for m in re.finditer(r"^RESULT (\S+) (\S+)$", out, re.M)}
 
 
-def block(**kw):
-    return BLOCK.format(plugin=PLUGIN, map=kw.get("map", "atom_modify map array"))
+def block(atom_map=True):
+    """A periodic fcc block of 256 atoms linked at L = 1.05 (cut 1.2), with the OUTPUTS."""
+    lines = morse_fcc(4, "morse/spline cut 1.2 link 1.05", noise=0, skin=0.2, atom_map=atom_map)
+    return "\n".join([f"plugin load {PLUGIN}", *lines, OUTPUTS])
 
 
 REPORT = 'print "RESULT {tag}pe $(pe:%.15g)"\nprint "RESULT {tag}links $(c_ls)"\n' \
@@ -59,7 +55,7 @@ def test_write_restart_right_after_a_run_keeps_links_and_a_split_run_equals_the_
     split_a = block() + hot + "run 300\n" + report("a") + "write_restart split.restart\nrun 0\n" + \
         report("b")
     split_b = f"plugin load {PLUGIN}\nread_restart split.restart\nneighbor 0.2 bin\nfix 1 all nve\n" \
-        + BLOCK.split("neighbor 0.2 bin\n")[1] + "run 0\n" + report("c") + "run 300\n" + report("d")
+        + OUTPUTS + "run 0\n" + report("c") + "run 300\n" + report("d")
     s = results(run_lmp(tmp_path, straight, nprocs))
     r = results(run_lmp(tmp_path, split_a, nprocs))
     r.update(results(run_lmp(tmp_path, split_b, nprocs, name="in.b")))
@@ -80,7 +76,7 @@ def test_write_restart_noinit_keeps_the_totals_of_every_rank_and_refuses_unresto
     hot = "velocity all create 2.0 4711 loop geom\nfix 1 all nve\ntimestep 0.002\n"
     write = block() + hot + "run 200\n" + report("a") + "write_restart n.restart noinit\n"
     read = f"plugin load {PLUGIN}\nread_restart n.restart\nneighbor 0.2 bin\n" \
-        + BLOCK.split("neighbor 0.2 bin\n")[1] + "run 0\n" + report("b")
+        + OUTPUTS + "run 0\n" + report("b")
     r = results(run_lmp(tmp_path, write, 2))
     r.update(results(run_lmp(tmp_path, read, 1, name="in.read")))
     assert r["abroken"] > 0 and r["alinks"] < 12 * 256
@@ -92,9 +88,9 @@ def test_write_restart_noinit_keeps_the_totals_of_every_rank_and_refuses_unresto
 
 
 @pytest.mark.parametrize("nprocs", [1, 2])
-@pytest.mark.parametrize("atom_map", ["atom_modify map array", ""])
+@pytest.mark.parametrize("atom_map", [True, False], ids=["atom_modify map array", ""])
 def test_links_follow_renumbered_ids_and_end_with_deleted_atoms(tmp_path, nprocs, atom_map):
-    script = block(map=atom_map) + """displace_atoms all random 0.02 0.02 0.02 991 units box
+    script = block(atom_map) + """displace_atoms all random 0.02 0.02 0.02 991 units box
 run 0
 """ + report("a") + """reset_atoms id sort yes
 run 0
@@ -269,7 +265,7 @@ print "RESULT natoms $(atoms)"
 def test_a_restart_written_before_any_run_links_at_the_first_run_after_reading(tmp_path, nprocs):
     a = block() + "write_restart early.restart\n"
     b = f"plugin load {PLUGIN}\nread_restart early.restart\nneighbor 0.2 bin\n" + \
-        BLOCK.split("neighbor 0.2 bin\n")[1] + "run 0\n" + report("r")
+        OUTPUTS + "run 0\n" + report("r")
     run_lmp(tmp_path, a, nprocs)
     r = results(run_lmp(tmp_path, b, nprocs, name="in.b"))
     assert r["rlinks"] == 12 * 256 and r["rdiff"] == 0
@@ -306,11 +302,8 @@ print "RESULT natoms $(atoms)"
 
 
 def dimer_session(lmp, style="morse/spline cut 1.3 link 1.05", r=1.0):
-    lmp.commands_list(["units lj", "region box block -4 4 -4 4 -4 4", "create_box 1 box",
-                       "mass 1 1.0", "create_atoms 1 single 0 0 0 units box",
-                       f"create_atoms 1 single {r} 0 0 units box", f"pair_style {style}",
-                       "pair_coeff * * 1.0 6.0 1.0", "neighbor 0.3 bin",
-                       "compute l all links/atom", "compute ls all reduce sum c_l"])
+    lmp.commands_list(morse_dimer(r, style) + ["compute l all links/atom",
+                                                "compute ls all reduce sum c_l"])
 
 
 def test_unfix_of_the_internal_fix_is_a_clear_error_and_the_host_survives():
@@ -324,18 +317,7 @@ def test_unfix_of_the_internal_fix_is_a_clear_error_and_the_host_survives():
         assert lmp.extract_compute("ls", 0, 0) == 2
 
 
-DIMER = f"""plugin load {PLUGIN}
-units lj
-region box block -4 4 -4 4 -4 4
-create_box 1 box
-mass 1 1.0
-create_atoms 1 single 0 0 0 units box
-create_atoms 1 single 1 0 0 units box
-pair_style morse/spline cut 1.3 link 1.05
-pair_coeff * * 1.0 6.0 1.0
-neighbor 0.3 bin
-run 0
-"""
+DIMER = "\n".join([f"plugin load {PLUGIN}", *morse_dimer(), "run 0", ""])
 
 
 @pytest.mark.parametrize("nprocs", [1, 2])
@@ -402,7 +384,7 @@ def test_reissued_after_read_restart_links_afresh(tmp_path, nprocs):
     run_lmp(tmp_path, block() + hot + "run 300\n" + report("a") + "write_restart r.restart\n",
             nprocs)
     after = f"plugin load {PLUGIN}\nread_restart r.restart\n" + \
-        BLOCK.split("mass 1 1.0\n")[1].replace("link 1.05", "link 1.02").replace(
+        (LINKED + OUTPUTS).replace("link 1.05", "link 1.02").replace(
             "cutoff 1.05", "cutoff 1.02") + "run 0\n" + report("b")
     out = run_lmp(tmp_path, after, nprocs, name="in.b")
     r = results(out)
@@ -459,15 +441,102 @@ def test_an_atom_created_with_a_deleted_atoms_id_is_not_linked(between):
     (beyond L a = 1.05): no link, with or without a run between the commands (was, without:
     the new atom inherited the deleted atom's link)."""
     with session() as lmp:
-        lmp.commands_list([
-            "units lj", "atom_modify map array", "region box block -4 4 -4 4 -4 4",
-            "create_box 1 box", "mass 1 1.0", "create_atoms 1 single 0 0 0 units box",
-            "create_atoms 1 single 1.0 0 0 units box", "pair_style morse/spline cut 1.3 link 1.05",
-            "pair_coeff * * 1.0 6.0 1.0", "neighbor 0.3 bin", "compute l all links/atom",
-            "compute ls all reduce sum c_l", "run 0 post no", "group two id 2",
+        lmp.commands_list(morse_dimer(atom_map=True) + [
+            "compute l all links/atom", "compute ls all reduce sum c_l", "run 0 post no",
+            "group two id 2",
             "delete_atoms group two", between, "create_atoms 1 single 0 1.15 0 units box",
             "run 0 post no"])
         links = lmp.numpy.extract_compute("ls", 0, 0)
         ids = sorted(lmp.numpy.extract_atom("id")[:2])
     assert ids == [1, 2]
     assert links == 0
+
+
+# ---------------------------------------------------------------- cumulative totals
+
+# a hot periodic block of 108 elements in which links break and weld, damage and slide
+MCA = """units lj
+atom_style sphere
+boundary p p p
+comm_modify vel yes
+lattice fcc $(sqrt(2.0))
+region box block 0 3 0 3 0 3
+create_box 1 box
+create_atoms 1 box
+set group all diameter 1.0
+pair_style mca fraction 0.74048 tolerance 0.02
+pair_coeff 1 1 young 1.0 poisson 0.3 {material}
+set group all density 1.35
+velocity all create 0.005 4711 loop geom
+neighbor 0.2 bin
+fix move all nve/sphere
+timestep 0.02
+compute pp all pair mca
+"""
+MCA_AGAIN = """comm_modify vel yes
+neighbor 0.2 bin
+fix move all nve/sphere
+timestep 0.02
+compute pp all pair mca
+"""
+# the elements' plastic strain lives in a fix property/atom that pair mca makes at its init
+PLASTIC = """run 0 post no
+compute ep all property/atom d_mca_plastic_strain
+compute eps all reduce sum c_ep
+"""
+SPLINE = "\n".join(morse_fcc(3, "morse/spline cut 1.2 link 1.05 relink yes", noise=0, skin=0.2) + [
+    "velocity all create 3.0 4928 loop geom", "fix 1 all nve", "timestep 0.002",
+    "compute p all pair morse/spline", ""])
+SPLINE_AGAIN = "neighbor 0.2 bin\nfix 1 all nve\ntimestep 0.002\ncompute p all pair morse/spline\n"
+# every total, each nonzero in its scene: (input, the totals, what restart files do not carry,
+# N, M, the tolerance of a run resumed from a restart file against the straight one: a setup
+# after a change of state parts pair mca's runs, doc/pair_mca.rst, measured 6e-5)
+TOTALS = {
+    "mca-broken-formed-energy-damage-friction": (
+        MCA.format(material="strength 0.02 damage 0.01 friction 0.3 weld 0.01"),
+        ["c_pp[1]", "c_pp[2]", "c_pp[3]", "c_pp[4]", "c_pp[6]"], MCA_AGAIN, 200, 200, 1e-3),
+    "mca-plastic": (MCA.format(material="yield 0.03") + PLASTIC, ["c_pp[5]", "c_eps"],
+                    MCA_AGAIN + PLASTIC, 200, 200, 1e-12),
+    "spline-broken-formed-energy": (SPLINE, ["c_p[1]", "c_p[2]", "c_p[3]"], SPLINE_AGAIN,
+                                    150, 150, 1e-12),
+}
+EXACT = 1e-12    # the same sums in another order (2 ranks)
+
+
+@pytest.fixture(scope="module")
+def totals(tmp_path_factory):
+    runs = {}
+
+    def of(scene, nprocs):
+        if (scene, nprocs) not in runs:
+            runs[scene, nprocs] = carried_totals(tmp_path_factory.mktemp(scene), *TOTALS[scene][:5],
+                                                 nprocs=nprocs)
+        return runs[scene, nprocs]
+    return of
+
+
+@pytest.mark.parametrize("nprocs", [1, 2])
+@pytest.mark.parametrize("scene", list(TOTALS))
+def test_totals_carry_across_run_boundaries(totals, scene, nprocs):
+    """run N + run M (pre no: no setup between, the straight run's steps) ends with the totals
+    of run N+M, and a run 0 (a setup) at the boundary keeps them: each total is carried from
+    one run to the next."""
+    r = totals(scene, nprocs)
+    assert np.all(r["straight_n"] != 0) and np.all(r["straight_nm"] != r["straight_n"])
+    assert r["split_n"] == pytest.approx(r["straight_n"], rel=EXACT)
+    assert r["split_nm"] == pytest.approx(r["straight_nm"], rel=EXACT)
+    assert r["boundary"] == pytest.approx(r["split_nm"], rel=EXACT)
+
+
+@pytest.mark.parametrize("nprocs", [1, 2])
+@pytest.mark.parametrize("scene", list(TOTALS))
+def test_totals_survive_restart_files(totals, scene, nprocs):
+    """A restart file written between runs, or during one (restart N), read in a fresh
+    instance: the totals read back are those of the uninterrupted run at that step, and the
+    run that wrote a file mid-run keeps them too; a run resumed from the file ends with the
+    uninterrupted run's totals."""
+    r = totals(scene, nprocs)
+    assert r["read_nm"] == pytest.approx(r["straight_nm"], rel=EXACT)
+    assert r["mid_nm"] == pytest.approx(r["straight_nm"], rel=EXACT)
+    assert r["read_n"] == pytest.approx(r["straight_n"], rel=EXACT)
+    assert r["resumed_nm"] == pytest.approx(r["straight_nm"], rel=TOTALS[scene][5])
