@@ -85,7 +85,6 @@ TEST(McaUnlinkedPair, SlidingAtTheCapDissipatesMuSigmaPerDistance)
   pressed.step(model, word, 0, v, moved, nullptr, a, nullptr, nullptr, 0.0, tally, true, out);
   const double cap = mu * std::fabs(pressed.sigma);
   EXPECT_NEAR(std::hypot(out.ft[0], out.ft[1]), pressed.area * cap, 1e-12);
-  const double slip = du - cap / a;    // the slide less the elastic part the cap stores
   // the slide's tangential part (to the new normal), less the elastic part the cap stores
   const double slide = du * moved.n[1];    // |du - (du . n) n| for du along x
   ASSERT_GT(a * slide, cap);
