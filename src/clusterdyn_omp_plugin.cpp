@@ -9,7 +9,7 @@
 #include "version.h"
 
 #include "pair_spline_omp.h"
-#include "register_pair.h"
+#include "register_style.h"
 
 #include <string>
 
@@ -18,23 +18,21 @@ using namespace ClusterDyn;
 
 namespace {
 
-template <class Law>
-void register_pair_omp(void *lmp, void *handle, lammpsplugin_regfunc register_plugin)
+template <class Law> void add_spline_omp_style(const StyleRegistrar &styles)
 {
   static const std::string name = std::string(Law::style) + "/omp";    // LAMMPS keeps the pointers
   static const std::string info = std::string("cluster-dynamics pair style ") + Law::style +
       " with OpenMP threads";
-  register_pair_class<PairSplineOMP<Law>>(name.c_str(), info.c_str(), lmp, handle,
-                                           register_plugin);
+  styles.add<PairSplineOMP<Law>>(name.c_str(), info.c_str());
 }
 
 }    // namespace
 
 extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
 {
-  auto register_plugin = (lammpsplugin_regfunc) regfunc;
-  register_pair_omp<MorseLaw>(lmp, handle, register_plugin);
-  register_pair_omp<LJLaw>(lmp, handle, register_plugin);
-  register_pair_omp<MieLaw>(lmp, handle, register_plugin);
-  register_pair_omp<HarmonicLaw>(lmp, handle, register_plugin);
+  const StyleRegistrar styles(lmp, handle, regfunc);
+  add_spline_omp_style<MorseLaw>(styles);
+  add_spline_omp_style<LJLaw>(styles);
+  add_spline_omp_style<MieLaw>(styles);
+  add_spline_omp_style<HarmonicLaw>(styles);
 }

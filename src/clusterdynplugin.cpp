@@ -18,7 +18,7 @@
 #include "fix_viscous_relative.h"
 #include "pair_mca.h"
 #include "pair_spline.h"
-#include "register_pair.h"
+#include "register_style.h"
 #include "version_check.h"
 
 #include "comm.h"
@@ -43,11 +43,10 @@ using namespace ClusterDyn;
 
 namespace {
 
-template <class Law>
-void register_pair(void *lmp, void *handle, lammpsplugin_regfunc register_plugin)
+template <class Law> void add_spline_style(const StyleRegistrar &styles)
 {
   static const std::string info = std::string("cluster-dynamics pair style ") + Law::style;
-  register_pair_class<PairSpline<Law>>(Law::style, info.c_str(), lmp, handle, register_plugin);
+  styles.add<PairSpline<Law>>(Law::style, info.c_str());
 }
 
 // clusterdyn_omp.so from the folder of this file, if the host LAMMPS has OPENMP
@@ -73,93 +72,28 @@ void load_omp_variants(LAMMPS *lmp)
   plugin_load(file.c_str(), lmp);
 }
 
-Fix *create_fix_viscous_relative(LAMMPS *lmp, int narg, char **arg)
-{
-  return new FixViscousRelative(lmp, narg, arg);
-}
-
-Fix *create_fix_descent_normalized(LAMMPS *lmp, int narg, char **arg)
-{
-  return new FixDescentNormalized(lmp, narg, arg);
-}
-
-Compute *create_compute_dust(LAMMPS *lmp, int narg, char **arg)
-{
-  return new ComputeDust(lmp, narg, arg);
-}
-
-Compute *create_compute_free_surface(LAMMPS *lmp, int narg, char **arg)
-{
-  return new ComputeFreeSurface(lmp, narg, arg);
-}
-
-Compute *create_compute_links_atom(LAMMPS *lmp, int narg, char **arg)
-{
-  return new ComputeLinksAtom(lmp, narg, arg);
-}
-
-Compute *create_compute_mca_atom(LAMMPS *lmp, int narg, char **arg)
-{
-  return new ComputeMcaAtom(lmp, narg, arg);
-}
-
-Compute *create_compute_pair_params(LAMMPS *lmp, int narg, char **arg)
-{
-  return new ComputePairParams(lmp, narg, arg);
-}
-
 }    // namespace
 
 extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
 {
   if (!host_version_matches(lmp, CLUSTERDYN_BUILT_FOR, "clusterdynplugin.so")) return;
-  auto register_plugin = (lammpsplugin_regfunc) regfunc;
-  register_pair<MorseLaw>(lmp, handle, register_plugin);
-  register_pair<LJLaw>(lmp, handle, register_plugin);
-  register_pair<MieLaw>(lmp, handle, register_plugin);
-  register_pair<HarmonicLaw>(lmp, handle, register_plugin);
-  register_pair_class<PairMCA>("mca", "movable cellular automata", lmp, handle, register_plugin);
-
-  lammpsplugin_t plugin;
-  plugin.version = LAMMPS_VERSION;
-  plugin.style = "fix";
-  plugin.name = "viscous/relative";
-  plugin.info = "cluster-dynamics damping on pairwise relative velocities";
-  plugin.author = "cluster-dynamics plugin developers";
-  plugin.creator.v2 = (lammpsplugin_factory2 *) &create_fix_viscous_relative;
-  plugin.handle = handle;
-  (*register_plugin)(&plugin, lmp);
-
-  plugin.name = "descent/normalized";
-  plugin.info = "Chernyshev's quasi-static iteration: normalized steps along the force";
-  plugin.creator.v2 = (lammpsplugin_factory2 *) &create_fix_descent_normalized;
-  (*register_plugin)(&plugin, lmp);
-
-  plugin.style = "compute";
-  plugin.name = "pair/params";
-  plugin.info = "characteristic parameters of a pair law";
-  plugin.creator.v2 = (lammpsplugin_factory2 *) &create_compute_pair_params;
-  (*register_plugin)(&plugin, lmp);
-
-  plugin.name = "dust";
-  plugin.info = "fragments of the bond graph and the dust";
-  plugin.creator.v2 = (lammpsplugin_factory2 *) &create_compute_dust;
-  (*register_plugin)(&plugin, lmp);
-
-  plugin.name = "free/surface";
-  plugin.info = "velocity of a body's free face, dust excluded (a simulated VISAR)";
-  plugin.creator.v2 = (lammpsplugin_factory2 *) &create_compute_free_surface;
-  (*register_plugin)(&plugin, lmp);
-
-  plugin.name = "links/atom";
-  plugin.info = "intact links per atom of a pair style with link L";
-  plugin.creator.v2 = (lammpsplugin_factory2 *) &create_compute_links_atom;
-  (*register_plugin)(&plugin, lmp);
-
-  plugin.name = "mca/atom";
-  plugin.info = "element stress and links of pair_style mca";
-  plugin.creator.v2 = (lammpsplugin_factory2 *) &create_compute_mca_atom;
-  (*register_plugin)(&plugin, lmp);
+  const StyleRegistrar styles(lmp, handle, regfunc);
+  add_spline_style<MorseLaw>(styles);
+  add_spline_style<LJLaw>(styles);
+  add_spline_style<MieLaw>(styles);
+  add_spline_style<HarmonicLaw>(styles);
+  styles.add<PairMCA>("mca", "movable cellular automata");
+  styles.add<FixViscousRelative>("viscous/relative",
+                                 "cluster-dynamics damping on pairwise relative velocities");
+  styles.add<FixDescentNormalized>("descent/normalized",
+                                   "Chernyshev's quasi-static iteration: normalized steps along "
+                                   "the force");
+  styles.add<ComputePairParams>("pair/params", "characteristic parameters of a pair law");
+  styles.add<ComputeDust>("dust", "fragments of the bond graph and the dust");
+  styles.add<ComputeFreeSurface>(
+      "free/surface", "velocity of a body's free face, dust excluded (a simulated VISAR)");
+  styles.add<ComputeLinksAtom>("links/atom", "intact links per atom of a pair style with link L");
+  styles.add<ComputeMcaAtom>("mca/atom", "element stress and links of pair_style mca");
 
   load_omp_variants((LAMMPS *) lmp);
 }

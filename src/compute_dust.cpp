@@ -25,8 +25,6 @@
 #include "compute_dust.h"
 
 #include "mpi_collectives.h"
-#include "arg_values.h"
-#include "keyword_set.h"
 #include "skin_check.h"
 
 #include "atom.h"
@@ -44,52 +42,19 @@
 #include "update.h"
 
 #include <algorithm>
-#include <map>
 #include <set>
 #include <unordered_map>
 
 using namespace LAMMPS_NS;
 using namespace ClusterDyn;
 
-enum { FRAGMENT_ID = 0, FRAGMENT_SIZE = 1, DUST_FLAG = 2 };         // per-atom columns
-enum { SIZE = 0, MASS = 1, MX = 2, MV = 5 };                         // ComputeDust::Sums
-static constexpr int RECORD = 1 + ComputeDust::NSUMS;                // fragment ID, sums
-static constexpr int NCOLS = 10;                                     // local columns
+enum { FRAGMENT_ID = 0, FRAGMENT_SIZE = 1, DUST_FLAG = 2 };    // per-atom columns
+static constexpr int NCOLS = 10;                                // local columns
 
 ComputeDust::ComputeDust(LAMMPS *lmp, int narg, char **arg) :
-    Compute(lmp, narg, arg), cutoff_user(0.0), maxsize(0), links(0), dust_rows(0),
-    state(nullptr), list(nullptr), nmax(0), fragments(nullptr), nrows(0), maxrows(0),
-    rows(nullptr), evaluated(-1)
+    Compute(lmp, narg, arg), opt(DustSettings::parse(lmp, narg, arg)), state(nullptr),
+    list(nullptr), nmax(0), fragments(nullptr), nrows(0), maxrows(0), rows(nullptr), evaluated(-1)
 {
-  KeywordSet given(lmp, "Compute dust");
-  for (int iarg = 3; iarg < narg; iarg++) {
-    const std::string key = arg[iarg];
-    given.add(key);
-    if (key == "links") {    // a flag: the bonds are the pair style's links
-      links = 1;
-      continue;
-    }
-    if (key != "cutoff" && key != "maxsize" && key != "rows")
-      error->all(FLERR, "Compute dust: unknown keyword '{}' (expected cutoff, maxsize, links "
-                 "or rows)", key);
-    if (++iarg >= narg) error->all(FLERR, "Compute dust: keyword {} needs a value", key);
-    const std::string value = arg[iarg];
-    if (key == "cutoff") {
-      cutoff_user = positive_arg("Compute dust", "cutoff", value.c_str(), lmp);
-    } else if (key == "maxsize") {
-      const double m = integer_arg("Compute dust", "maxsize", value.c_str(), lmp);
-      if (m < 1) error->all(FLERR, "Compute dust: maxsize must be >= 1 (got {})", value);
-      maxsize = (bigint) m;
-    } else {
-      if (value != "all" && value != "dust")
-        error->all(FLERR, "Compute dust: rows must be all or dust (got {})", value);
-      dust_rows = value == "dust";
-    }
-  }
-  if (links && cutoff_user > 0.0)
-    error->all(FLERR, "Compute dust: keywords links and cutoff exclude each other (the links are "
-               "the bonds)");
-
   vector_flag = 1;
   size_vector = 6;
   extvector = 0;
@@ -112,7 +77,7 @@ void ComputeDust::init()
 {
   if (!atom->tag_enable) error->all(FLERR, "Compute dust requires atom IDs");
   evaluated = -1;    // the atoms may have changed since (displace_atoms, delete_atoms, ...)
-  if (links) {
+  if (opt.links) {
     int dim;
     state = force->pair ? (PairState *) force->pair->extract("pair_state", dim) : nullptr;
     if (!state)
@@ -120,10 +85,10 @@ void ComputeDust::init()
                  "minimization that made the links: run 0 will do)");
     return;
   }
-  if (cutoff_user == 0.0 && (!force->pair || !force->pair->cutsq))
+  if (opt.cutoff == 0.0 && (!force->pair || !force->pair->cutsq))
     error->all(FLERR, "Compute dust: without the cutoff keyword it needs a pair style, whose "
                "cutoffs are the bond distances");
-  if (cutoff_user == 0.0 && utils::strmatch(force->pair_style, "^hybrid") &&
+  if (opt.cutoff == 0.0 && utils::strmatch(force->pair_style, "^hybrid") &&
       !modify->get_fix_by_style("^adapt").empty() && comm->me == 0)
     error->warning(FLERR, "Compute dust: under pair_style {} the bond distances are the "
                    "hybrid's cutoffs as the run starts; fix adapt changing a sub-style's cutoffs "
@@ -132,16 +97,16 @@ void ComputeDust::init()
   const double skin = neighbor->skin;
   const double cutghost = force->pair ? MAX(force->pair->cutforce + skin, comm->cutghostuser)
                                       : comm->cutghostuser;
-  if (cutoff_user > cutghost)
+  if (opt.cutoff > cutghost)
     error->all(FLERR, "Compute dust: cutoff {} exceeds the ghost atom range {}: raise it with "
-               "comm_modify cutoff", cutoff_user, cutghost);
-  if (cutoff_user > 0.0)
-    check_neighbor_skin(lmp, force->pair ? MAX(cutoff_user, force->pair->cutforce) : cutoff_user,
+               "comm_modify cutoff", opt.cutoff, cutghost);
+  if (opt.cutoff > 0.0)
+    check_neighbor_skin(lmp, force->pair ? MAX(opt.cutoff, force->pair->cutforce) : opt.cutoff,
                         "Compute dust");
 
   auto req = neighbor->add_request(this, NeighConst::REQ_OCCASIONAL);
-  if (cutoff_user > 0.0 && (!force->pair || cutoff_user > force->pair->cutforce))
-    req->set_cutoff(cutoff_user);
+  if (opt.cutoff > 0.0 && (!force->pair || opt.cutoff > force->pair->cutforce))
+    req->set_cutoff(opt.cutoff);
 }
 
 // per type pair, squared: the cutoff keyword's, or the pair style's cutoffs as they are now
@@ -149,8 +114,8 @@ void ComputeDust::init()
 void ComputeDust::bond_distances()
 {
   const int ntp1 = atom->ntypes + 1;
-  cutsq.assign(ntp1 * ntp1, cutoff_user * cutoff_user);
-  if (cutoff_user == 0.0)
+  cutsq.assign(ntp1 * ntp1, opt.cutoff * opt.cutoff);
+  if (opt.cutoff == 0.0)
     for (int i = 1; i < ntp1; i++)
       for (int j = 1; j < ntp1; j++) cutsq[i * ntp1 + j] = force->pair->cutsq[i][j];
 }
@@ -189,20 +154,37 @@ void ComputeDust::evaluate()
     memory->create(fragments, nmax, 3, "dust:fragments");
     array_atom = fragments;
   }
-
-  if (!links) {
+  if (!opt.links) {
     comm->forward_comm();    // current ghost positions
     neighbor->build_one(list);
     bond_distances();
   }
 
+  join_bonded_atoms();    // 1.
+  const std::vector<tagint> setmin = label_local_sets();
+  comm->forward_comm(this);    // 2. the ghosts learn their owner's label
+  const LabelUnion fragment = join_across_processors(setmin);    // 3.
+  FragmentSums sums(world, opt.maxsize);                         // 4.
+  sum_fragments(fragment, sums);
+  sums.combine();
+  write_vector(sums);
+  write_rows(sums);
+  write_atoms(sums);
+}
+
+/* ----------------------------------------------------------------------
+   1. union-find over my atoms and ghosts; the images of one atom are one
+   node; bonds: pairs closer than the bond distance, or (links) the pair
+   style's intact links
+------------------------------------------------------------------------- */
+
+void ComputeDust::join_bonded_atoms()
+{
   const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
   const tagint *tag = atom->tag;
   const int *mask = atom->mask, *type = atom->type;
   const double *const *x = atom->x;
   const int ntp1 = atom->ntypes + 1;
-
-  // 1. union-find over my atoms and ghosts; images of one atom are one node
 
   sets.reset(nall);
   if (atom->map_style != Atom::MAP_NONE) {
@@ -217,11 +199,10 @@ void ComputeDust::evaluate()
       if (!seen.second) sets.join(i, seen.first->second);
     }
   }
-  // bonds: pairs closer than the bond distance, or (links) the pair style's intact links
-  if (links && !state->made())
+  if (opt.links && !state->made())
     error->all(FLERR, "Compute dust links: the links are not made yet (they are at the setup of "
                "the first run or minimization: run 0 will do)");
-  const StateView view = links ? state->view() : StateView{list, nullptr, nullptr, 0, 1};
+  const StateView view = opt.links ? state->view() : StateView{list, nullptr, nullptr, 0, 1};
   const NeighList *bonds = view.list;
   for (int ii = 0; ii < bonds->inum; ii++) {
     const int i = bonds->ilist[ii];
@@ -229,7 +210,7 @@ void ComputeDust::evaluate()
     for (int jj = 0; jj < bonds->numneigh[i]; jj++) {
       const int j = bonds->firstneigh[i][jj] & NEIGHMASK;
       if (!(mask[j] & groupbit)) continue;
-      if (links) {
+      if (opt.links) {
         if (!state_now(view.words[i][jj])) continue;
       } else {
         const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
@@ -238,8 +219,14 @@ void ComputeDust::evaluate()
       sets.join(i, j);
     }
   }
+}
 
-  // smallest atom ID of each local set (sets of my atoms and ghosts)
+// the smallest atom ID of each local set (returned by set root), the label of its atoms
+std::vector<tagint> ComputeDust::label_local_sets()
+{
+  const int nall = atom->nlocal + atom->nghost;
+  const tagint *tag = atom->tag;
+  const int *mask = atom->mask;
   std::vector<tagint> setmin(nall, MAXTAGINT);
   for (int i = 0; i < nall; i++)
     if (mask[i] & groupbit) {
@@ -249,98 +236,78 @@ void ComputeDust::evaluate()
   label.resize(nall);
   for (int i = 0; i < nall; i++)
     label[i] = (mask[i] & groupbit) ? (double) setmin[sets.find(i)] : 0.0;
+  return setmin;
+}
 
-  // 2. ghosts learn the label of their atom on its owner
-
-  comm->forward_comm(this);    // changes only the ghosts' labels
-
-  // 3. pairs (my label of a ghost, its owner's label) -> global union-find on labels
-
+// 3. the pairs (my label of a ghost, its owner's label) from every processor: a global
+// union-find on labels, each leading to its fragment's ID (the smallest label)
+LabelUnion ComputeDust::join_across_processors(const std::vector<tagint> &setmin)
+{
+  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
+  const int *mask = atom->mask;
   std::vector<tagint> pairs;
-  {
-    std::set<std::pair<tagint, tagint>> seen;    // few distinct pairs: per fragment and neighbour
-    for (int i = nlocal; i < nall; i++) {
-      if (!(mask[i] & groupbit)) continue;
-      const tagint a = setmin[sets.find(i)], b = (tagint) label[i];
-      if (a != b && seen.emplace(std::min(a, b), std::max(a, b)).second) {  // new pair
-        pairs.push_back(std::min(a, b));
-        pairs.push_back(std::max(a, b));
-      }
+  std::set<std::pair<tagint, tagint>> seen;    // few distinct pairs: per fragment and neighbour
+  for (int i = nlocal; i < nall; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    const tagint a = setmin[sets.find(i)], b = (tagint) label[i];
+    if (a != b && seen.emplace(std::min(a, b), std::max(a, b)).second) {    // new pair
+      pairs.push_back(std::min(a, b));
+      pairs.push_back(std::max(a, b));
     }
   }
   const std::vector<tagint> allpairs = allgatherv(pairs, MPI_LMP_TAGINT, world);
-  LabelUnion fragment;    // label -> the fragment's ID (its smallest label)
+  LabelUnion fragment;
   for (size_t k = 0; k < allpairs.size(); k += 2) fragment.join(allpairs[k], allpairs[k + 1]);
+  return fragment;
+}
 
-  // 4. per-fragment sums, each combined on the fragment's owner (ID modulo nprocs):
-  //    one MPI_Alltoallv there, one back with the size and dust flag
-
-  std::unordered_map<tagint, Sums> mine;    // fragment ID -> sums over my atoms
-  for (int i = 0; i < nlocal; i++) {
+// 4. my atoms' fragment IDs and their sums
+void ComputeDust::sum_fragments(const LabelUnion &fragment, FragmentSums &sums)
+{
+  const int *mask = atom->mask;
+  for (int i = 0; i < atom->nlocal; i++) {
     fragments[i][FRAGMENT_ID] = fragments[i][FRAGMENT_SIZE] = fragments[i][DUST_FLAG] = 0.0;
     if (!(mask[i] & groupbit)) continue;
     const tagint id = fragment.root((tagint) label[i]);
     fragments[i][FRAGMENT_ID] = id;
-    const double m = atom->rmass ? atom->rmass[i] : atom->mass[type[i]];
+    const double m = atom->rmass ? atom->rmass[i] : atom->mass[atom->type[i]];
     double xu[3];
-    domain->unmap(x[i], atom->image[i], xu);
-    Sums &sums = mine[id];
-    sums[SIZE] += 1.0;
-    sums[MASS] += m;
-    for (int d = 0; d < 3; d++) {
-      sums[MX + d] += m * xu[d];
-      sums[MV + d] += m * atom->v[i][d];
+    domain->unmap(atom->x[i], atom->image[i], xu);
+    sums.add(id, m, xu, atom->v[i]);
+  }
+}
+
+// the global vector: dust atoms, fragments and mass, its fraction, the body, fragments
+void ComputeDust::write_vector(const FragmentSums &sums)
+{
+  double mine[5] = {0.0, 0.0, 0.0, 0.0, 0.0};    // dust atoms, fragments, mass; mass; fragments
+  for (const auto &kv : sums.owned()) {
+    const double size = kv.second[FragmentSums::SIZE], mass = kv.second[FragmentSums::MASS];
+    if (sums.is_dust(kv.first, size)) {
+      mine[0] += size;
+      mine[1] += 1.0;
+      mine[2] += mass;
     }
+    mine[3] += mass;
+    mine[4] += 1.0;
   }
-  const int nprocs = comm->nprocs;
-  std::vector<std::vector<double>> outbox(nprocs);    // (ID, sums) per owner
-  for (const auto &kv : mine) {
-    auto &box = outbox[kv.first % nprocs];
-    box.push_back((double) kv.first);
-    box.insert(box.end(), kv.second.begin(), kv.second.end());
-  }
-  std::vector<int> incounts;
-  const std::vector<double> inbox = alltoallv(outbox, incounts, world);
+  double all[5];
+  MPI_Allreduce(mine, all, 5, MPI_DOUBLE, MPI_SUM, world);
+  vector[0] = all[0];
+  vector[1] = all[1];
+  vector[2] = all[2];
+  vector[3] = all[3] > 0.0 ? all[2] / all[3] : 0.0;
+  vector[4] = sums.body_size();
+  vector[5] = all[4];
+}
 
-  std::map<tagint, Sums> owned;    // the fragments I own, by ID
-  for (size_t k = 0; k < inbox.size(); k += RECORD) {
-    Sums &sums = owned[(tagint) inbox[k]];
-    for (int c = 0; c < NSUMS; c++) sums[c] += inbox[k + 1 + c];
-  }
-
-  // the body: the largest fragment, the smallest ID among equals
-  double mybody[2] = {0.0, 0.0};    // (size, -ID) of my largest, then everybody's
-  for (const auto &kv : owned)
-    if (kv.second[SIZE] > mybody[0]) {
-      mybody[0] = kv.second[SIZE];
-      mybody[1] = -(double) kv.first;
-    }
-  double body[2];
-  MPI_Allreduce(&mybody[0], &body[0], 1, MPI_DOUBLE, MPI_MAX, world);
-  if (mybody[0] < body[0]) mybody[1] = -(double) MAXTAGINT;
-  MPI_Allreduce(&mybody[1], &body[1], 1, MPI_DOUBLE, MPI_MAX, world);
-  const tagint bodyid = (tagint) -body[1];
-  auto is_dust = [&](tagint id, double size) {
-    return maxsize > 0 ? size <= (double) maxsize : id != bodyid;
-  };
-
-  double totals[5] = {0.0, 0.0, 0.0, 0.0, 0.0};    // dust atoms, fragments, mass; mass; fragments
+// local rows: one per fragment I own (dust only with rows dust), sorted by ID
+void ComputeDust::write_rows(const FragmentSums &sums)
+{
+  using F = FragmentSums;
   nrows = 0;
-  for (const auto &kv : owned) {
-    const bool dust = is_dust(kv.first, kv.second[SIZE]);
-    if (dust) {
-      totals[0] += kv.second[SIZE];
-      totals[1] += 1.0;
-      totals[2] += kv.second[MASS];
-    }
-    totals[3] += kv.second[MASS];
-    totals[4] += 1.0;
-    if (dust || !dust_rows) nrows++;
-  }
-  double sums[5];
-  MPI_Allreduce(totals, sums, 5, MPI_DOUBLE, MPI_SUM, world);
-
-  // local rows: one per fragment I own (dust only with rows dust), sorted by ID
+  for (const auto &kv : sums.owned())
+    if (!opt.dust_rows || sums.is_dust(kv.first, kv.second[F::SIZE])) nrows++;
   if (nrows > maxrows) {
     memory->destroy(rows);
     maxrows = nrows;
@@ -349,49 +316,32 @@ void ComputeDust::evaluate()
   array_local = rows;
   size_local_rows = nrows;
   int r = 0;
-  for (const auto &kv : owned) {
-    const Sums &s = kv.second;
-    const bool dust = is_dust(kv.first, s[SIZE]);
-    if (dust_rows && !dust) continue;
+  for (const auto &kv : sums.owned()) {
+    const F::Sums &s = kv.second;
+    const bool dust = sums.is_dust(kv.first, s[F::SIZE]);
+    if (opt.dust_rows && !dust) continue;
     double *row = rows[r++];
     row[0] = kv.first;
-    row[1] = s[SIZE];
-    row[2] = s[MASS];
+    row[1] = s[F::SIZE];
+    row[2] = s[F::MASS];
     for (int d = 0; d < 3; d++) {
-      row[3 + d] = s[MX + d] / s[MASS];
-      row[6 + d] = s[MV + d] / s[MASS];
+      row[3 + d] = s[F::MX + d] / s[F::MASS];
+      row[6 + d] = s[F::MV + d] / s[F::MASS];
     }
     row[9] = dust ? 1.0 : 0.0;
   }
+}
 
-  // back to the atoms: (size, dust flag) for each ID each processor sent, in its order
-  std::vector<std::vector<double>> replies(nprocs);
-  for (int p = 0, k = 0; p < nprocs; p++)
-    for (int n = 0; n < incounts[p] / RECORD; n++, k += RECORD) {
-      const tagint id = (tagint) inbox[k];
-      const double size = owned[id][SIZE];
-      replies[p].push_back(size);
-      replies[p].push_back(is_dust(id, size) ? 1.0 : 0.0);
-    }
-  std::vector<int> replycounts;
-  const std::vector<double> answers = alltoallv(replies, replycounts, world);
-  std::unordered_map<tagint, std::pair<double, double>> mysizes;    // answers come grouped
-  for (int p = 0, a = 0; p < nprocs; p++)                            // by owner, in my order
-    for (size_t k = 0; k < outbox[p].size(); k += RECORD, a += 2)
-      mysizes[(tagint) outbox[p][k]] = {answers[a], answers[a + 1]};
-  for (int i = 0; i < nlocal; i++) {
-    if (!(mask[i] & groupbit)) continue;
-    const auto &answer = mysizes[(tagint) fragments[i][FRAGMENT_ID]];
-    fragments[i][FRAGMENT_SIZE] = answer.first;
-    fragments[i][DUST_FLAG] = answer.second;
+// back to the atoms: their fragment's size and dust flag
+void ComputeDust::write_atoms(const FragmentSums &sums)
+{
+  const std::unordered_map<tagint, FragmentSums::Answer> answers = sums.answers();
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(atom->mask[i] & groupbit)) continue;
+    const FragmentSums::Answer &answer = answers.at((tagint) fragments[i][FRAGMENT_ID]);
+    fragments[i][FRAGMENT_SIZE] = answer.size;
+    fragments[i][DUST_FLAG] = answer.dust;
   }
-
-  vector[0] = sums[0];
-  vector[1] = sums[1];
-  vector[2] = sums[2];
-  vector[3] = sums[3] > 0.0 ? sums[2] / sums[3] : 0.0;
-  vector[4] = body[0];
-  vector[5] = sums[4];
 }
 
 /* ---------------------------------------------------------------------- */

@@ -7,9 +7,10 @@
 #define LMP_CLUSTERDYN_COMPUTE_DUST_H
 
 #include "compute.h"
+#include "dust_settings.h"
+#include "fragment_sums.h"
 #include "union_find.h"
 
-#include <array>
 #include <vector>
 
 namespace LAMMPS_NS {
@@ -28,14 +29,8 @@ namespace ClusterDyn {
     void unpack_forward_comm(int, int, double *) override;
     double memory_usage() override;
 
-    static constexpr int NSUMS = 8;    // per fragment: size, mass, m x (3), m v (3)
-    using Sums = std::array<double, NSUMS>;
-
    private:
-    double cutoff_user;        // 0: the pair style's cutoff of each type pair
-    bigint maxsize;            // 0: every fragment but the largest is dust
-    int links;                 // bonds = the pair style's links (link L), not distances
-    int dust_rows;             // local rows of the dust only (rows dust), not every fragment
+    DustSettings opt;          // the compute's arguments
     class PairState *state;    // the pair style's link state (links)
     std::vector<double> cutsq; // (ntypes+1)^2 bond distance squared
     class NeighList *list;
@@ -49,6 +44,14 @@ namespace ClusterDyn {
 
     void bond_distances();
     void evaluate();
+    // the stages of one evaluation (compute_dust.cpp)
+    void join_bonded_atoms();
+    std::vector<tagint> label_local_sets();
+    LabelUnion join_across_processors(const std::vector<tagint> &setmin);
+    void sum_fragments(const LabelUnion &fragment, FragmentSums &sums);
+    void write_vector(const FragmentSums &sums);
+    void write_rows(const FragmentSums &sums);
+    void write_atoms(const FragmentSums &sums);
   };
 
 }    // namespace ClusterDyn

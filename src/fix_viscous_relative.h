@@ -6,8 +6,8 @@
 #ifndef LMP_CLUSTERDYN_FIX_VISCOUS_RELATIVE_H
 #define LMP_CLUSTERDYN_FIX_VISCOUS_RELATIVE_H
 
-#include "damping_pass.h"
-#include "damping_types.h"
+#include "damping_forces.h"
+#include "damping_pairs.h"
 #include "fix.h"
 #include "viscous_settings.h"
 
@@ -37,29 +37,19 @@ namespace ClusterDyn {
     ViscousSettings opt;     // the fix's arguments
     DampingTypes types;      // per type pair: range, C, the pass's coefficients
     DampingPass pass;        // the damping in the pair style's force pass (damping_pass.h)
+    DampingForces forces;    // fd: damping force per atom (own and ghost), summed to owners
     int fused;               // this run: the pair style took the pass
     int adapting;            // this run has a fix adapt: the tables read before each loop
-    double **fd;             // damping force per atom (own and ghost), summed to owners
-    int maxfd;
     double removed;          // energy removed by this proc's kicks
     double power_full;       // sum of fd . v at the last full step (trapezoid rule)
     bigint fd_step;          // the step whose damping forces fd holds (-1: none)
     bigint kick_step;        // the last step with post_force (rerun calls end_of_step alone)
     class NeighList *list;   // our own, without link L
     class PairState *state;  // the pair style's link state (link L): damp the linked pairs
-    struct Bonds {
-      const class NeighList *list;
-      int *const *words;     // link L: the pair states of list's pairs; else null
-    };
-    Bonds current_bonds() const;
 
-    void clear_fd();
+    DampingBonds current_bonds() const;
     int claim_pass();                    // at init: whether the pair style takes the pass
     double compute_forces(int vflag);    // returns the power sum of my atoms
-    double add_forces();                 // fd's ghost parts to owners, fd into f; the power
-    template <int NORMAL, int DPD, int GENERAL, int LINKED> void damp(const Bonds &bonds);
-    double power() const;    // sum over my atoms of fd . v
-    void check_stability();
   };
 
 }    // namespace ClusterDyn

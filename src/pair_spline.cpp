@@ -60,17 +60,12 @@ template <class Law> void PairSpline<Law>::compute(int eflag, int vflag)
   const StatePass pass = start_compute();
   StateTally changes;
   DampingPass *const fused = damping_this_step();    // fix viscous/relative's
-  dispatch(eflag, fused, [&](auto t, auto mode, auto ev, auto e, auto n, auto d) {
-    spline_kernel<Law, decltype(t), decltype(mode)::value, decltype(ev)::value,
-                  decltype(e)::value, decltype(n)::value, decltype(d)::value>(
-        kernel_data(fused), list, atom, force->special_lj, 0, list->inum, (xyz3 *) atom->f[0], pass,
-        changes,
-        [this](int i, int j, int nlocal, int newton, double evdwl, double fpair, double dx,
-               double dy, double dz) {
-          ev_tally(i, j, nlocal, newton, evdwl, 0.0, fpair, dx, dy, dz);
-        },
-        [this](int i, int j, double rsq) { singular_error(i, j, rsq); });
-  });
+  run_spline_kernel<Law>(
+      variant(eflag, fused), kernel_data(fused), list, atom, force->special_lj, 0, list->inum,
+      (xyz3 *) atom->f[0], pass, changes,
+      [this](int i, int j, int nlocal, int newton, double evdwl, double fpair, double dx, double dy,
+             double dz) { ev_tally(i, j, nlocal, newton, evdwl, 0.0, fpair, dx, dy, dz); },
+      [this](int i, int j, double rsq) { singular_error(i, j, rsq); });
   if (fused) fused->filled = 1;
   if (vflag_fdotr) virial_fdotr_compute();
   finish_compute(changes);
@@ -259,42 +254,14 @@ template <class Law> void PairSpline<Law>::write_data_all(FILE *fp)
   table.write_data(fp, true);
 }
 
-/* ----------------------------------------------------------------------
-   Pi, Pi', Pi'', Pi''' at r: the full law (kappa, tail, shift) or the base
-------------------------------------------------------------------------- */
-
-template <class Law>
-void PairSpline<Law>::law_derivs(int itype, int jtype, double r, double *d, bool tailed) const
-{
-  const SplineCoeff &c = table.at(itype, jtype);
-  if (!tailed) return kappa_derivs<Law>(c, r, d);
-  if (r >= c.rc) {
-    d[0] = d[1] = d[2] = d[3] = 0.0;
-    return;
-  }
-  with_tail(setting.tail, [&](auto t) { decltype(t)::template derivs<Law>(c, r, d); });
-  d[0] -= c.offset;
-}
-
-template <class Law> double PairSpline<Law>::law_b(int itype, int jtype) const
-{
-  const bool lagunov = setting.tail == LAGUNOV;
-  if (!Law::has_inflection && !lagunov) return 0.0;
-  const SplineCoeff &c = table.at(itype, jtype);
-  const double b = Law::has_inflection ? c.a + (Law::inflection(c) - c.a) / c.kappa : 0.0;
-  return lagunov ? LagunovTail::inflection<Law>(c, b) : b;
-}
+/* ---------------------------------------------------------------------- */
 
 template <class Law>
 double PairSpline<Law>::single(int, int, int itype, int jtype, double rsq, double,
                                double factor_lj, double &fforce)
 {
-  const SplineCoeff &c = table.at(itype, jtype);
-  double fpair = 0.0, e = 0.0;
-  if (rsq < c.cutsq)
-    e = with_tail(setting.tail,
-                  [&](auto t) { return decltype(t)::template eval<true, Law>(c, rsq, fpair); }) -
-        c.offset;
+  double fpair;
+  const double e = pair_law_energy<Law>(table.at(itype, jtype), setting.tail, rsq, fpair);
   fforce = factor_lj * fpair;
   return factor_lj * e;
 }

@@ -4,11 +4,12 @@
 
    PairSpline<Law> is the LAMMPS interface: it parses the settings
    (spline_settings.h) and coefficients into its table (spline_table.h),
-   writes them to restart and data files, and dispatches each force
-   evaluation to the one kernel (spline_kernel.h), compiled per tail, mode
-   and flags, so a scene pays only for what it uses.  The laws, tails and
-   the link rule are stateless policies (spline_laws.h, spline_tails.h,
-   spline_links.h); the link state is a PairState (pair_state.h).
+   writes them to restart and data files, and runs each force evaluation
+   in the one kernel (spline_kernel.h), in the variant of its tail, mode
+   and flags (spline_dispatch.h), so a scene pays only for what it uses.
+   The laws, tails and the link rule are stateless policies (spline_laws.h,
+   spline_tails.h, spline_links.h; one pair's law outside the force loop:
+   spline_pair_law.h); the link state is a PairState (pair_state.h).
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_CLUSTERDYN_PAIR_SPLINE_H
@@ -17,13 +18,13 @@
 #include "law_source.h"
 #include "pair.h"
 #include "pair_state.h"
-#include "spline_kernel.h"
+#include "spline_dispatch.h"
+#include "spline_pair_law.h"
 #include "spline_step_check.h"
 #include "spline_table.h"
 
 #include "force.h"
 
-#include <type_traits>
 #include <vector>
 
 namespace LAMMPS_NS {
@@ -51,9 +52,15 @@ namespace ClusterDyn {
     void *extract(const char *, int &) override;
     double memory_usage() override;
 
-    void law_derivs(int i, int j, double r, double *d, bool tail) const override;
+    void law_derivs(int i, int j, double r, double *d, bool tail) const override
+    {
+      pair_law_derivs<Law>(table.at(i, j), setting.tail, r, d, tail);
+    }
     double law_a(int i, int j) const override { return table.at(i, j).a; }
-    double law_b(int i, int j) const override;
+    double law_b(int i, int j) const override
+    {
+      return pair_law_inflection<Law>(table.at(i, j), setting.tail);
+    }
 
    protected:
     SplineSettings setting;                // pair_style
@@ -74,8 +81,14 @@ namespace ClusterDyn {
       return {table.coeffs, links.coeff.data(), links.making(), setting.chain_n,
               chain_scale.data(), fused};
     }
+    // the kernel variant of this step; fuse: fix viscous/relative's pass (damping_this_step)
+    SplineVariant variant(int eflag, bool fuse) const
+    {
+      return {setting.tail, setting.chain_n, kappa_any, links.on(), evflag, eflag,
+              force->newton_pair, fuse};
+    }
     // fix viscous/relative's pass on this step: offered, no tallies, and a kernel mode that damps
-    // (dispatch: PLAIN and KAPPA; the slot outlives a pair_style line that sets chain or link)
+    // (PLAIN and KAPPA; the slot outlives a pair_style line that sets chain or link)
     DampingPass *damping_this_step() const
     {
       return damping && damping->fd && !evflag && !links.on() && !setting.chain_n ? damping
@@ -84,53 +97,7 @@ namespace ClusterDyn {
     StatePass start_compute() { return links.on() ? state.begin() : StatePass(); }
     void finish_compute(const StateTally &changes);
     [[noreturn]] void singular_error(int i, int j, double rsq) const;
-
-    // calls run(tail policy, mode, evflag, eflag, newton_pair, damp) with compile-time
-    // constants; damp 1 (PLAIN and KAPPA modes) where fuse is set: a step without tallies
-    template <class Run> void dispatch(int eflag, bool fuse, Run &&run) const;
   };
-
-  template <class Law>
-  template <class Run>
-  void PairSpline<Law>::dispatch(int eflag, bool fuse, Run &&run) const
-  {
-    auto with_flags = [&](auto t, auto k) {
-      using I0 = std::integral_constant<int, 0>;
-      using I1 = std::integral_constant<int, 1>;
-      constexpr int MODE = decltype(k)::value;
-      if (evflag) {
-        if (eflag) {
-          if (force->newton_pair) run(t, k, I1(), I1(), I1(), I0());
-          else run(t, k, I1(), I1(), I0(), I0());
-        } else {
-          if (force->newton_pair) run(t, k, I1(), I0(), I1(), I0());
-          else run(t, k, I1(), I0(), I0(), I0());
-        }
-        return;
-      }
-      if constexpr (MODE == SplineMode::PLAIN || MODE == SplineMode::KAPPA) {
-        if (fuse) {
-          if (force->newton_pair) run(t, k, I0(), I0(), I1(), I1());
-          else run(t, k, I0(), I0(), I0(), I1());
-          return;
-        }
-      }
-      if (force->newton_pair) run(t, k, I0(), I0(), I1(), I0());
-      else run(t, k, I0(), I0(), I0(), I0());
-    };
-    using M = SplineMode;
-    with_tail(setting.tail, [&](auto t) {
-      if (setting.chain_n) return with_flags(t, std::integral_constant<int, M::CHAIN>());
-      if constexpr (Law::kappa_kernel) {
-        if (kappa_any) {
-          if (links.on()) return with_flags(t, std::integral_constant<int, M::LINK_KAPPA>());
-          return with_flags(t, std::integral_constant<int, M::KAPPA>());
-        }
-      }
-      if (links.on()) return with_flags(t, std::integral_constant<int, M::LINK>());
-      with_flags(t, std::integral_constant<int, M::PLAIN>());
-    });
-  }
 
   using PairMorseSpline = PairSpline<MorseLaw>;
   using PairLJSpline = PairSpline<LJLaw>;

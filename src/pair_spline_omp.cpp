@@ -49,18 +49,15 @@ template <class Law> void PairSplineOMP<Law>::compute(int eflag, int vflag)
     StateTally mine;
     const DampingPass damping_mine = fused ? damping_threads.pass_of(*fused, tid) : DampingPass();
     try {
-      this->dispatch(eflag, fused, [&](auto t, auto mode, auto ev, auto e, auto n,
-                                                      auto d) {
-        spline_kernel<Law, decltype(t), decltype(mode)::value, decltype(ev)::value,
-                      decltype(e)::value, decltype(n)::value, decltype(d)::value>(
-            this->kernel_data(fused ? &damping_mine : nullptr), this->list, this->atom, this->force->special_lj, ifrom, ito,
-            (xyz3 *) thr->get_f()[0], pass, mine,
-            [&](int i, int j, int nlocal, int newton, double evdwl, double fpair, double dx,
-                double dy, double dz) {
-              ev_tally_thr(this, i, j, nlocal, newton, evdwl, 0.0, fpair, dx, dy, dz, thr);
-            },
-            [this](int i, int j, double rsq) { this->singular_error(i, j, rsq); });
-      });
+      run_spline_kernel<Law>(
+          this->variant(eflag, fused), this->kernel_data(fused ? &damping_mine : nullptr),
+          this->list, this->atom, this->force->special_lj, ifrom, ito, (xyz3 *) thr->get_f()[0],
+          pass, mine,
+          [&](int i, int j, int nlocal, int newton, double evdwl, double fpair, double dx,
+              double dy, double dz) {
+            ev_tally_thr(this, i, j, nlocal, newton, evdwl, 0.0, fpair, dx, dy, dz, thr);
+          },
+          [this](int i, int j, double rsq) { this->singular_error(i, j, rsq); });
     } catch (...) {    // an exception must not leave an OpenMP region (std::terminate)
 #if defined(_OPENMP)
 #pragma omp critical(clusterdyn_pair_spline_failure)
