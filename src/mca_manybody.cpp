@@ -51,14 +51,6 @@ void McaManybody::finish_strain()
   exchange.to_ghosts(theta, 1);
 }
 
-double McaManybody::pair_stress(int i, int j, double ai, double aj) const
-{
-  const std::vector<McaMaterial> &m = *scaled;
-  const int *type = atom->type;
-  return (aj * m[type[i]].lambda * theta[i][0] + ai * m[type[j]].lambda * theta[j][0]) /
-      (ai + aj);
-}
-
 void McaManybody::begin_changes(int nall)
 {
   for (int i = 0; i < nall; i++)

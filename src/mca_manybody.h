@@ -20,6 +20,7 @@
 
 #include "mca_exchange.h"
 #include "mca_material.h"
+#include "atom.h"
 #include "pair_state.h"
 #include "pointers.h"
 
@@ -57,7 +58,13 @@ namespace ClusterDyn {
     void finish_strain();
 
     // the normal stress the many-body term adds to linked pair ij (a_i, a_j: half stiffnesses)
-    double pair_stress(int i, int j, double ai, double aj) const;
+    double pair_stress(int i, int j, double ai, double aj) const
+    {
+      const std::vector<McaMaterial> &m = *scaled;
+      const int *type = atom->type;
+      return (aj * m[type[i]].lambda * theta[i][0] + ai * m[type[j]].lambda * theta[j][0]) /
+          (ai + aj);
+    }
 
     // the changes of theta this step makes (volume changes dv of pairs, shared as elongations)
     void begin_changes(int nall);

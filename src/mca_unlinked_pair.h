@@ -71,9 +71,12 @@ namespace ClusterDyn {
     // not turn; vel, omega: null in a minimizer, where velocities mean nothing) and, pressed
     // at the weld stress, its welding: the pair links where it is, with the contact's stresses
     // (no jump of the pair's force or energy; the many-body term gains the link)
-    void step(const McaPairModel &model, int &word, int trial, double *v, const McaPairFrame &p,
-              const C::Turn *turn, double a, double *const *vel, double *const *omega, double dt,
-              const McaPairTally &tally, bool energy_wanted, McaPairForce &out) const
+    // Inlined into the force pass, as McaLinkedPair::step
+    [[gnu::always_inline]] void step(const McaPairModel &model, int &word, int trial, double *v,
+                                     const McaPairFrame &p, const C::Turn *turn, double a,
+                                     double *const *vel, double *const *omega, double dt,
+                                     const McaPairTally &tally, bool energy_wanted,
+                                     McaPairForce &out) const
     {
       const McaFriction &fr = model.friction;
       double tau[3] = {0.0, 0.0, 0.0}, visc[3] = {0.0, 0.0, 0.0};

@@ -42,8 +42,8 @@ TEST(McaLinkedPair, ForceIsMinusTheEnergysSlope)
   McaLinkedPair law(elastic, link.v, a);
   double moment[3], ep, em;
   const double n[3] = {1.0, 0.0, 0.0};
-  ep = law.energy(n, r + h, moment);
-  em = law.energy(n, r - h, moment);
+  ep = law.energy(n, law.elongation(r + h), 0.0, moment);
+  em = law.energy(n, law.elongation(r - h), 0.0, moment);
   const double sigma = McaLinkedPair::elastic_stress(link.v, a, r);
   EXPECT_NEAR(sigma, a * (r - ref), 1e-15);
   // the force on i along n pulls it to j when stretched: dE/dr = S sigma
@@ -59,7 +59,10 @@ TEST(McaLinkedPair, PlasticReturnScalesTheDeviatorAndDissipatesTheEnergyLost)
   McaLinkedPair law(elastic, link.v, a);
   const double n[3] = {1.0, 0.0, 0.0};
   double moment[3];
-  const double e_before = law.energy(n, r, moment);
+  auto energy = [&]() {
+    return law.energy(n, law.elongation(r), C::dot(link.v + C::TAU, link.v + C::TAU), moment);
+  };
+  const double e_before = energy();
   double sigma = McaLinkedPair::elastic_stress(link.v, a, r), dv = 0.0;
   const double sigma0 = sigma;
   const double work = law.plastic_return(sigma, phi, mean, r, dv);
@@ -67,7 +70,7 @@ TEST(McaLinkedPair, PlasticReturnScalesTheDeviatorAndDissipatesTheEnergyLost)
   EXPECT_NEAR(link.v[C::TAU + 1], phi * 0.01, 1e-17);
   EXPECT_NEAR(link.v[C::EPL], (sigma0 - sigma) / a, 1e-15);    // the elongation that flowed
   EXPECT_NEAR(sigma, McaLinkedPair::elastic_stress(link.v, a, r), 1e-15);
-  EXPECT_NEAR(work, e_before - law.energy(n, r, moment), 1e-15);
+  EXPECT_NEAR(work, e_before - energy(), 1e-15);
   EXPECT_NEAR(dv, -law.area * (sigma0 - sigma) / a, 1e-15);    // the plastic elongation's volume
 }
 
@@ -78,20 +81,20 @@ TEST(McaLinkedPair, HoldsDamagesAndBreaksAtTheResponsesStresses)
   Link link(1.0, 1.0);
   double lost = 1.0;
   // below sigma_d the largest stress is kept and nothing is lost; compression never damages
-  EXPECT_EQ(McaLinkedPair(response, link.v, a).respond(0.5, lost), McaLinkedPair::DAMAGES);
+  EXPECT_EQ(McaLinkedPair(response, link.v, a).respond(0.5, 0.0, lost), McaLinkedPair::DAMAGES);
   EXPECT_EQ(lost, 0.0);
   EXPECT_EQ(link.v[C::KAPPA], 0.5);
-  EXPECT_EQ(McaLinkedPair(response, link.v, a).respond(0.4, lost), McaLinkedPair::HOLDS);
-  EXPECT_EQ(McaLinkedPair(response, link.v, a).respond(-5.0, lost), McaLinkedPair::HOLDS);
+  EXPECT_EQ(McaLinkedPair(response, link.v, a).respond(0.4, 0.0, lost), McaLinkedPair::HOLDS);
+  EXPECT_EQ(McaLinkedPair(response, link.v, a).respond(-5.0, 0.0, lost), McaLinkedPair::HOLDS);
   McaLinkedPair law(response, link.v, a);
-  EXPECT_EQ(law.respond(1.0, lost), McaLinkedPair::DAMAGES);
+  EXPECT_EQ(law.respond(1.0, 0.0, lost), McaLinkedPair::DAMAGES);
   EXPECT_EQ(link.v[C::KAPPA], 1.0);
   EXPECT_NEAR(lost, 1.0 - response.intact(1.0), 1e-15);
   McaLinkedPair damaged(response, link.v, a);    // lost counts from what was left
-  EXPECT_EQ(damaged.respond(1.2, lost), McaLinkedPair::DAMAGES);
+  EXPECT_EQ(damaged.respond(1.2, 0.0, lost), McaLinkedPair::DAMAGES);
   EXPECT_NEAR(lost, response.intact(1.0) - response.intact(1.2), 1e-15);
   McaLinkedPair breaking(response, link.v, a);
-  EXPECT_EQ(breaking.respond(1.4, lost), McaLinkedPair::BREAKS);
+  EXPECT_EQ(breaking.respond(1.4, 0.0, lost), McaLinkedPair::BREAKS);
   EXPECT_EQ(lost, breaking.intact);
 }
 
