@@ -216,6 +216,71 @@ BLOCK_UNITS = {
 }
 
 
+# a hot periodic block (3 x 3 x 3 fcc cells, velocities of 0.08 sqrt(E / rho) per component)
+# whose thermal stresses pass a yield stress of 0.01 E many times over: its elements flow at
+# random, in tension and in compression, next to elements that do not
+HOT_BLOCK = """
+units {units}
+atom_style sphere
+boundary p p p
+comm_modify vel yes
+variable d equal {d}
+variable E equal {E}
+variable tau equal {tau}
+{lattice}
+region box block 0 3 0 3 0 3
+create_box 1 box
+create_atoms 1 box
+set group all diameter ${{d}}
+variable phi equal PI/sqrt(18.0)
+pair_style mca fraction ${{phi}} tolerance 0.02
+pair_coeff 1 1 young ${{E}} poisson 0.3 yield $({Y}*v_E)
+set group all density $({rho}/v_phi)
+variable vs equal 0.08*v_d/v_tau
+variable vx atom normal(0,${{vs}},4711)
+variable vy atom normal(0,${{vs}},4712)
+variable vz atom normal(0,${{vs}},4713)
+velocity all set v_vx v_vy v_vz units box
+velocity all zero linear
+neighbor $(0.2*v_d) bin
+timestep $({dt}*v_tau)
+fix move all nve/sphere
+compute pp all pair mca
+compute rot all erotate/sphere
+variable etot equal ke+c_rot+pe+c_pp[5]
+thermo_modify norm no
+"""
+
+
+@pytest.mark.xfail(strict=True, raises=AssertionError, reason="known defect (doc/pair_mca.rst, "
+                   "Restrictions): the "
+                   "return about Love's mean stress can feed energy in at a low yield stress")
+@pytest.mark.parametrize("units", ["lj", "si"])
+def test_hot_block_yielding_at_random_keeps_its_energy_budget(units):
+    """The hot block at yield 0.01 E over 10 time units (d sqrt(rho / E)): the plastic work
+    should never fall, and kinetic + potential + plastic work should stay at the initial energy
+    within 10 % of the work, falling with dt.  Today the plastic work falls (negative
+    dissipation) and the potential energy runs away (or the run stops with links left beyond the
+    list): a strict xfail until the return keeps each element's volume (doc/pair_mca.rst)."""
+    errors = []
+    for dt in (0.02, 0.01):
+        with session() as lmp:
+            lmp.commands_list(HOT_BLOCK.format(Y=0.01, dt=dt, **BLOCK_UNITS[units])
+                              .strip().splitlines())
+            lmp.command("run 0")
+            e0 = lmp.extract_variable("etot")
+            works = []
+            for _ in range(50):
+                lmp.command(f"run {round(0.2 / dt)} pre no post no")
+                works.append(tally(lmp)[4])
+            e1 = lmp.extract_variable("etot")
+        assert works[-1] > 0.5 * e0                       # most of the energy flowed away
+        assert np.all(np.diff(works) >= 0.0), works
+        errors.append(abs(e1 - e0) / works[-1])
+    assert errors[0] < 0.1, errors
+    assert errors[1] < 0.7 * errors[0], errors
+
+
 def locked_lateral(ex, elastic):
     """The lateral log strain ey of an fcc block (x along [100]) stretched by ex whose pairs'
     relative elongations sum to `elastic` (their elastic part): the return keeps the plastic
