@@ -253,8 +253,8 @@ thermo_modify norm no
 
 
 @pytest.mark.xfail(strict=True, raises=AssertionError, reason="known defect (doc/pair_mca.rst, "
-                   "Restrictions): the "
-                   "return about Love's mean stress can feed energy in at a low yield stress")
+                   "Restrictions): the return about Love's mean stress can feed energy in at a "
+                   "low yield stress")
 @pytest.mark.parametrize("units", ["lj", "si"])
 def test_hot_block_yielding_at_random_keeps_its_energy_budget(units):
     """The hot block at yield 0.01 E over 10 time units (d sqrt(rho / E)): the plastic work
