@@ -174,7 +174,8 @@ def test_block_on_an_incline_slides_at_g_sin_minus_mu_cos():
 
 # ---------------------------------------------------------------- plasticity
 
-PLASTIC_BLOCK = """
+# the periodic blocks of the plasticity tests: units, element diameter d, modulus E, time scale
+BLOCK_HEAD = """
 units {units}
 atom_style sphere
 boundary p p p
@@ -182,7 +183,8 @@ comm_modify vel yes
 variable d equal {d}
 variable E equal {E}
 variable tau equal {tau}
-variable M equal {rho}*v_d^3
+"""
+PLASTIC_BLOCK = BLOCK_HEAD + """variable M equal {rho}*v_d^3
 {lattice}
 region box block 0 4 0 4 0 4
 create_box 1 box
@@ -219,15 +221,7 @@ BLOCK_UNITS = {
 # a hot periodic block (3 x 3 x 3 fcc cells, velocities of 0.08 sqrt(E / rho) per component)
 # whose thermal stresses pass a yield stress of 0.01 E many times over: its elements flow at
 # random, in tension and in compression, next to elements that do not
-HOT_BLOCK = """
-units {units}
-atom_style sphere
-boundary p p p
-comm_modify vel yes
-variable d equal {d}
-variable E equal {E}
-variable tau equal {tau}
-{lattice}
+HOT_BLOCK = BLOCK_HEAD + """{lattice}
 region box block 0 3 0 3 0 3
 create_box 1 box
 create_atoms 1 box
