@@ -24,7 +24,9 @@ TOP = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SCRATCH = "/tmp/clusterdyn-mutate"
 PY = "unittest/python/"
 
-# component, file, the line's text as it is, as the mutant has it, covering tests, what it breaks
+# component, file, the line's text as it is, as the mutant has it, covering tests (pytest files,
+# or HEADERS: the GoogleTest program of the stateless headers), what it breaks
+HEADERS = "test_headers"
 MUTANTS = [
     ("Mie law (spline_laws.h)", "src/spline_laws.h",
      "fpair = c.kappa * c.c2 / c.a * x * (xn - xm) / r;",
@@ -57,7 +59,7 @@ MUTANTS = [
     ("MCA friction (mca_friction.h)", "src/mca_friction.h",
      "return {sqrt(mu_i * mu_j), sqrt(eta_i * eta_j),",
      "return {0.5 * (mu_i + mu_j), sqrt(eta_i * eta_j),",
-     [PY + "test_mca_response.py"], "two surfaces' mu by the arithmetic mean"),
+     [HEADERS, PY + "test_mca_response.py"], "two surfaces' mu by the arithmetic mean"),
     ("MCA plasticity (mca_plasticity.cpp)", "src/mca_plasticity.cpp",
      "out[i][0] = (yield_now + m.hardening * deps) / sint;",
      "out[i][0] = yield_now / sint;",
@@ -81,7 +83,7 @@ MUTANTS = [
     ("MCA unlinked pair (mca_unlinked_pair.h)", "src/mca_unlinked_pair.h",
      "for (int k = 0; k < 3; k++) visc[k] = eta * (vr[k] - vn * n[k]);",
      "for (int k = 0; k < 3; k++) visc[k] = eta * vr[k];",
-     [PY + "test_mca_response.py"], "viscous friction acting along the normal too"),
+     [HEADERS, PY + "test_mca_response.py"], "viscous friction acting along the normal too"),
     ("MCA type table (mca_type_table.cpp)", "src/mca_type_table.cpp",
      "if (m.strength > 0.0 || m.yield > 0.0 || m.weld > 0.0) return true;",
      "if (m.strength > 0.0 || m.yield > 0.0) return true;",
@@ -126,9 +128,13 @@ def scratch_tree(log):
         sys.exit(f"mutate.py: the scratch tree does not build (see {log})")
 
 
-def test_command(tests):
+def test_command(test):
+    """One covering test: the header tests' program or a pytest file (stops at its first
+    failure)."""
+    if test == HEADERS:
+        return f"cmake --build build -j2 --target {HEADERS} && build/unittest/{HEADERS}"
     return (f". {SCRATCH}/build/env.sh && unset LAMMPS_PLUGIN_PATH && /usr/bin/python3 -m pytest "
-            f"-x -q -p no:cacheprovider {' '.join(tests)}")
+            f"-x -q -p no:cacheprovider {test}")
 
 
 def main():
@@ -155,11 +161,12 @@ def main():
         built = True
         if not path.startswith("tools/"):
             built = run("cmake --build build -j2 --target clusterdynplugin", SCRATCH, log) == 0
-        caught = not built or run(test_command(tests), SCRATCH, log) != 0
+        by = "does not build" if not built else next(
+            (os.path.basename(t) for t in tests if run(test_command(t), SCRATCH, log) != 0),
+            "SURVIVED")
+        caught = by != "SURVIVED"
         open(file, "w").write(original)
         survived += not caught
-        by = "does not build" if not built else (", ".join(os.path.basename(t) for t in tests)
-                                                  if caught else "SURVIVED")
         rows.append((comp, what, by, time.time() - start))
         print(f"{comp}: {what}: {by} ({time.time() - start:.0f} s)", flush=True)
     run("cmake --build build -j2 --target clusterdynplugin", SCRATCH, log)
