@@ -6,7 +6,8 @@
      args()        the same arguments as text (data files)
      setup()       constants of the force kernel (SplineCoeff::c1..c3)
      inflection()  b of the unmodified base (Pi''(b) = 0, b > a), or 0 if there is none
-     derivs()      Pi, Pi', Pi'', Pi''' of the unmodified base at argument s
+     derivs()      Pi, Pi', Pi'', Pi''' of the unmodified base at argument s (after
+                   setup(): Mie's reads its constants)
      wide_well_hint, overflow_hint   what to change when the wagner tail has no
                    cutoff or the law overflows (error messages)
      eval<KAPPA>() energy and fpair = f(r)/r of the kappa-modified base at rsq;
