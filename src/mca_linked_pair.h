@@ -51,7 +51,7 @@ namespace ClusterDyn {
     {
       double *tau = v + C::TAU;
       const double back = (intact * sigma - mean) * (1.0 - phi) / intact;
-      const double e_old = r - v[C::REF] - v[C::EPL], tau2_old = C::dot(tau, tau);
+      const double e_old = elongation(r), tau2_old = C::dot(tau, tau);
       v[C::EPL] += back / a;
       sigma -= back;
       for (int k = 0; k < 3; k++) tau[k] *= phi;
@@ -70,7 +70,9 @@ namespace ClusterDyn {
       for (int k = 0; k < 3; k++) rot[k] += dt * (omega_j[k] - omega_i[k]);
     }
 
-    double elongation(double r) const { return r - v[C::REF] - v[C::EPL]; }
+    // the elastic elongation at separation r: r - r_ref - e_p
+    static double elongation(const double *v, double r) { return r - v[C::REF] - v[C::EPL]; }
+    double elongation(double r) const { return elongation(v, r); }
 
     // the effective energy at elongation elong with |tau~|^2 = tau2 (moment: the effective
     // moment on i)

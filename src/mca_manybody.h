@@ -11,7 +11,7 @@
    and plastic flow (2) release the energy between theta before and after
    each, in that order.
    The seam for a volumetric response beyond the linear one (an equation of
-   state): pair_stress(), energy() and the release in tally_changes().
+   state): pair_stress(), tally_energy() and the release in tally_changes().
    Formulas: doc/pair_mca.rst.
 ------------------------------------------------------------------------- */
 

@@ -6,6 +6,7 @@
 #include "mca_plasticity.h"
 
 #include "atom.h"
+#include "error.h"
 #include "fix.h"
 #include "memory.h"
 #include "modify.h"
@@ -17,6 +18,7 @@ using namespace ClusterDyn;
 
 void McaPlasticity::init(const std::vector<McaMaterial> &materials)
 {
+  on = false;
   for (const McaMaterial &m : materials)
     if (m.yield > 0.0) on = true;
   if (on && !modify->get_fix_by_id(FIX_ID)) {
@@ -25,6 +27,9 @@ void McaPlasticity::init(const std::vector<McaMaterial> &materials)
     // could not read its section back): elements read from one are fresh
     fix->wd_section = 0;
   }
+  if (on && !strain_array())
+    error->all(FLERR, "Pair mca: fix {} is not the per-element plastic strain (fix "
+               "property/atom d_{}) the style makes: its ID is reserved", FIX_ID, NAME);
 }
 
 double *McaPlasticity::strain_array() const
@@ -32,11 +37,6 @@ double *McaPlasticity::strain_array() const
   int flag, cols;
   const int index = atom->find_custom(NAME, flag, cols);
   return index < 0 || flag != 1 || cols != 0 ? nullptr : atom->dvector[index];
-}
-
-const double *McaPlasticity::plastic_strain() const
-{
-  return on ? strain_array() : nullptr;
 }
 
 McaPlasticity::~McaPlasticity()
@@ -49,7 +49,7 @@ void McaPlasticity::grow(int nmax_atoms)
   if (!on || nmax_atoms <= nmax) return;
   nmax = nmax_atoms;
   memory->destroy(returned);
-  memory->create(returned, nmax, 2, "pair:returned");
+  memory->create(returned, nmax, COLUMNS, "pair:returned");
 }
 
 void McaPlasticity::return_map(double *const *stress, const std::vector<McaMaterial> &scaled)
@@ -73,5 +73,5 @@ void McaPlasticity::return_map(double *const *stress, const std::vector<McaMater
     eps_p[i] += deps;
     out[i][0] = (yield_now + m.hardening * deps) / sint;
   }
-  exchange.to_ghosts(returned, 2);
+  exchange.to_ghosts(returned, COLUMNS);
 }

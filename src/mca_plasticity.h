@@ -29,6 +29,7 @@ namespace ClusterDyn {
    public:
     static constexpr const char *FIX_ID = "MCA_PLASTIC_STRAIN";
     static constexpr const char *NAME = "mca_plastic_strain";
+    enum { PHI = 0, MEAN = 1, COLUMNS = 2 };    // what each element sends to its ghosts
 
     McaPlasticity(LAMMPS *lmp, McaExchange &exchange) :
         Pointers(lmp), exchange(exchange), on(false), returned(nullptr), nmax(0)
@@ -39,18 +40,16 @@ namespace ClusterDyn {
     void init(const std::vector<McaMaterial> &materials);
     bool active() const { return on; }
     void grow(int nmax_atoms);
-    double memory_usage() const { return (double) nmax * 2 * sizeof(double); }
+    double memory_usage() const { return (double) nmax * COLUMNS * sizeof(double); }
 
     // stress: Love's stress of my elements (energy/volume, xx yy zz xy xz yz) from their
     // linked pairs; per element phi and the mean stress, sent to ghosts; eps_p of my
     // elements grows
     void return_map(double *const *stress, const std::vector<McaMaterial> &scaled);
     // of a pair of elements: the return factor phi = min(phi_i, phi_j) and the mean stress
-    double phi(int i, int j) const { return std::min(returned[i][0], returned[j][0]); }
-    double mean(int i, int j) const { return 0.5 * (returned[i][1] + returned[j][1]); }
+    double phi(int i, int j) const { return std::min(returned[i][PHI], returned[j][PHI]); }
+    double mean(int i, int j) const { return 0.5 * (returned[i][MEAN] + returned[j][MEAN]); }
 
-    // the plastic strain of my elements, or null (no material yields)
-    const double *plastic_strain() const;
 
    private:
     McaExchange &exchange;

@@ -98,7 +98,6 @@ void McaTypeTable::write_restart(FILE *fp) const
 
 void McaTypeTable::read_restart(FILE *fp)
 {
-  allocate();
   for (int i = 1; i <= ntypes; i++) {
     if (comm->me == 0) utils::sfread(FLERR, &material_set[i], sizeof(int), 1, fp, nullptr, error);
     MPI_Bcast(&material_set[i], 1, MPI_INT, 0, world);

@@ -43,7 +43,7 @@ namespace ClusterDyn {
     bool links(int itype, int jtype) const { return !unlinkable[itype * (ntypes + 1) + jtype]; }
 
     void write_restart(FILE *) const;
-    void read_restart(FILE *);
+    void read_restart(FILE *);    // after allocate()
     void write_data(FILE *) const;
     void write_data_all(FILE *) const;
 

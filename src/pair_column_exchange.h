@@ -12,8 +12,11 @@
 #include "mca_exchange.h"
 
 #include "comm.h"
+#include "error.h"
 #include "force.h"
 #include "pair.h"
+
+#include <cstdlib>
 
 namespace LAMMPS_NS {
 namespace ClusterDyn {
@@ -24,6 +27,7 @@ namespace ClusterDyn {
 
     void to_owners(double **r, int c) override
     {
+      if (c > comm_reverse) too_many(c, comm_reverse);
       if (!force->newton_pair) return;
       rows = r;
       columns = c;
@@ -31,6 +35,7 @@ namespace ClusterDyn {
     }
     void to_ghosts(double **r, int c) override
     {
+      if (c > comm_forward) too_many(c, comm_forward);
       rows = r;
       columns = c;
       comm->forward_comm(this, c);
@@ -66,6 +71,15 @@ namespace ClusterDyn {
    private:
     double **rows;    // what pack and unpack move now
     int columns;
+
+    // LAMMPS sizes its buffers by comm_forward and comm_reverse: a component that sends more
+    // columns must raise them (the pair style's constructor)
+    [[noreturn]] void too_many(int c, int most) const
+    {
+      error->one(FLERR, "Pair {}: a component exchanges {} columns per atom, more than the {} "
+                 "the style declared (comm_forward, comm_reverse)", force->pair_style, c, most);
+      std::abort();    // not reached: error->one() throws
+    }
   };
 
 }    // namespace ClusterDyn

@@ -46,8 +46,9 @@ PairMCA::PairMCA(LAMMPS *lmp) :
   manybody_flag = 1;
   nondefault_history_transfer = 1;
   beyond_contact = 1;    // fix neigh/history keeps every listed pair's state, not only contacts
-  comm_forward = 2;    // the most columns sent to ghosts (plasticity: phi and mean stress)
-  comm_reverse = McaElementStress::COLUMNS;    // the most summed onto owners
+  // the most columns a component sends to ghosts or sums onto owners (PairColumnExchange)
+  comm_forward = McaPlasticity::COLUMNS;
+  comm_reverse = std::max<int>(McaElementStress::COLUMNS, McaManybody::NCHANGES);
   // pvector: broken links, links formed, the energy of those changes, then the energy dissipated
   // by damage, by plastic flow and by friction (McaWork; all since the links were made)
   nextra = 3 + NWORK;
@@ -110,8 +111,8 @@ void PairMCA::volumetric_strain(const StatePass &pass)
     const double *v = pass.pair_values(i, jj);
     const McaPairFrame p(atom->x, i, j);
     const McaResponse &resp = types.model(atom->type[i], atom->type[j]).response;
-    const double elong = resp.intact(v[C::KAPPA]) * v[C::AREA] *
-                         (sqrt(p.rsq) - v[C::REF] - v[C::EPL]);
+    const double elong =
+        resp.intact(v[C::KAPPA]) * v[C::AREA] * McaLinkedPair::elongation(v, sqrt(p.rsq));
     manybody.add_elongation(i, j, elong, stiffness[i], stiffness[j], newton || j < nlocal);
   });
   manybody.finish_strain();
@@ -129,7 +130,7 @@ void PairMCA::plastic_trial(const StatePass &pass)
   const double *radius = atom->radius;
   const int nlocal = atom->nlocal;
   const int newton = force->newton_pair;
-  const int moving = !update->setupflag && update->whichflag == 1;
+  const bool moving = elements_turn();
   const double dt = update->dt;
   stress.zero(nlocal + atom->nghost);
 
@@ -140,7 +141,7 @@ void PairMCA::plastic_trial(const StatePass &pass)
     if (p.rsq == 0.0) coincident_elements(lmp, i, j);
     p.orient(radius[i], radius[j]);
     const C::Turn turn = p.turn(omega[i], omega[j], dt);
-    v[C::SIG] = trial_stress(i, j, v, p, moving ? &turn : nullptr);
+    v[C::SIG] = trial_stresses(i, j, v, p, moving ? &turn : nullptr);
     const double s =
         types.model(atom->type[i], atom->type[j]).response.intact(v[C::KAPPA]) * v[C::AREA];
     const double *tau = v + C::TAU;
@@ -170,9 +171,8 @@ void PairMCA::pair_forces(const StatePass &pass, StateTally &changes)
   const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
   const int newton = force->newton_pair;
   const int plastic = plasticity.active();
-  // a setup re-evaluates the same positions; a minimizer does not turn the elements and its
-  // velocities mean nothing
-  const int moving = !update->setupflag && update->whichflag == 1;
+  const bool moving = elements_turn();
+  // a minimizer's velocities mean nothing
   double **vel = update->whichflag == 1 ? atom->v : nullptr;
   const double dt = update->dt;
   if (stress.wanted()) stress.zero(nall);
@@ -200,7 +200,7 @@ void PairMCA::pair_forces(const StatePass &pass, StateTally &changes)
     McaPairForce out;
     if (linked) {
       McaLinkedPair link(model.response, v, a);
-      const double sigma = plastic ? v[C::SIG] : trial_stress(i, j, v, p, turning);
+      const double sigma = plastic ? v[C::SIG] : trial_stresses(i, j, v, p, turning);
       const double phi = plastic ? plasticity.phi(i, j) : 1.0;
       const double mean = phi < 1.0 ? plasticity.mean(i, j) : 0.0;
       if (!link.step(sigma, phi, mean, p, turning, omega[i], omega[j], dt, tally, eflag_either,
@@ -236,15 +236,21 @@ void PairMCA::pair_forces(const StatePass &pass, StateTally &changes)
   if (stress.wanted()) stress.to_owners(true);
 }
 
-// a linked pair's effective normal stress at this step (before any return), and its
-// tangential stress after this step's slide (stored in v; turn: null, it does not turn)
-double PairMCA::trial_stress(int i, int j, double *v, const McaPairFrame &p, const C::Turn *turn)
+// a linked pair's effective normal stress at this step (before any return), returned, and its
+// tangential stress after this step's slide, stored in v (turn: null, the pair does not turn)
+double PairMCA::trial_stresses(int i, int j, double *v, const McaPairFrame &p, const C::Turn *turn)
 {
   const double ai = stiffness[i], aj = stiffness[j], a = C::series(ai, aj);
   double sigma = McaLinkedPair::elastic_stress(v, a, p.r);
   if (setting.manybody) sigma += manybody.pair_stress(i, j, ai, aj);
   C::slide(v + C::TAU, v + C::DPREV, p.d, p.n, turn, a);
   return sigma;
+}
+
+// a setup re-evaluates the same positions; a minimizer does not turn the elements
+bool PairMCA::elements_turn() const
+{
+  return !update->setupflag && update->whichflag == 1;
 }
 
 /* ----------------------------------------------------------------------
@@ -328,7 +334,7 @@ void PairMCA::read_restart(FILE *fp)
 {
   read_restart_settings(fp);
   allocate();
-  types.read_restart(fp);
+  types.read_restart(fp);    // into the table allocate() made
 }
 
 void PairMCA::write_restart_settings(FILE *fp)

@@ -61,8 +61,6 @@ namespace ClusterDyn {
     void request_element_stress() { stress.request(); }
     double **element_stress() const { return stress.current(); }
     double packing_fraction() const { return setting.fraction; }
-    // the equivalent plastic strain of my elements, or null (no material yields)
-    const double *plastic_strain() const { return plasticity.plastic_strain(); }
 
    private:
     McaSettings setting;
@@ -82,7 +80,9 @@ namespace ClusterDyn {
     void volumetric_strain(const StatePass &);
     void plastic_trial(const StatePass &);
     void pair_forces(const StatePass &, StateTally &);
-    double trial_stress(int i, int j, double *v, const McaPairFrame &p, const McaContact::Turn *turn);
+    double trial_stresses(int i, int j, double *v, const McaPairFrame &p,
+                          const McaContact::Turn *turn);
+    bool elements_turn() const;
   };
 
 }    // namespace ClusterDyn
