@@ -456,6 +456,44 @@ def test_bad_response_input(coeff, message):
             lmp.command(f"pair_coeff 1 1 {coeff}")
 
 
+def test_the_plastic_strains_fix_id_is_reserved():
+    """A fix of the user's own on the ID the style keeps its per-element plastic strain in:
+    an error naming it at the run, not a crash."""
+    with session() as lmp:
+        lmp.commands_list(["units lj", "atom_style sphere", "region b block 0 4 0 4 0 4",
+                           "create_box 1 b", "create_atoms 1 single 1 1 1",
+                           "set group all diameter 1.0", "comm_modify vel yes",
+                           "fix MCA_PLASTIC_STRAIN all property/atom i_mine",
+                           "pair_style mca fraction 0.7",
+                           "pair_coeff 1 1 bulk 1 shear 1 yield 0.01"])
+        with pytest.raises(Exception, match="MCA_PLASTIC_STRAIN is not the per-element plastic"):
+            lmp.command("run 0")
+
+
+@pytest.mark.parametrize("units", ["lj", "si"])
+def test_a_material_that_no_longer_yields_flows_no_more(units):
+    """pair_coeff given again without yield replaces the material: the block stretched past
+    the old yield stress returns nothing (its plastic strain stays 0; the plastic pass is off)
+    and reads the elastic block's stress to round-off."""
+    u = BLOCK_UNITS[units]
+    y = 0.001 * u["E"]
+    with session() as lmp:
+        lmp.commands_list(RETURN_BLOCK.format(response="", **u).strip().splitlines())
+        elastic = lmp.extract_compute("seq", LMP_STYLE_GLOBAL, 0)
+    with session() as lmp:
+        script = RETURN_BLOCK.format(response=f"yield {y}", **u).strip().splitlines()
+        stretch = script.index("change_box all x scale 1.003 remap")
+        lmp.commands_list(script[:stretch])
+        lmp.command(f"pair_coeff 1 1 young {u['E']} poisson 0.3")
+        lmp.commands_list(script[stretch:] + ["compute ep all property/atom d_mca_plastic_strain",
+                                              "compute epm all reduce max c_ep", "run 0"])
+        again = lmp.extract_compute("seq", LMP_STYLE_GLOBAL, 0)
+        eps_p = lmp.extract_compute("epm", LMP_STYLE_GLOBAL, 0)
+    assert elastic > 1.5 * y
+    assert eps_p == 0.0
+    assert again == pytest.approx(elastic, rel=1e-12)
+
+
 # ---------------------------------------------------------------- fracture runs
 
 FRACTURE = """
