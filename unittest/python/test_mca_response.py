@@ -218,19 +218,22 @@ BLOCK_UNITS = {
 }
 
 
-# a hot periodic block (3 x 3 x 3 fcc cells, velocities of 0.08 sqrt(E / rho) per component)
-# whose thermal stresses pass a yield stress of 0.01 E many times over: its elements flow at
-# random, in tension and in compression, next to elements that do not
-HOT_BLOCK = BLOCK_HEAD + """{lattice}
+# a periodic block of 3 x 3 x 3 fcc cells of a material (response: its words after young and
+# poisson)
+SMALL_BLOCK = BLOCK_HEAD + """{lattice}
 region box block 0 3 0 3 0 3
 create_box 1 box
 create_atoms 1 box
 set group all diameter ${{d}}
 variable phi equal PI/sqrt(18.0)
 pair_style mca fraction ${{phi}} tolerance 0.02
-pair_coeff 1 1 young ${{E}} poisson 0.3 yield $({Y}*v_E)
+pair_coeff 1 1 young ${{E}} poisson 0.3 {response}
 set group all density $({rho}/v_phi)
-variable vs equal 0.08*v_d/v_tau
+"""
+# the block hot (velocities of 0.08 sqrt(E / rho) per component), its thermal stresses passing a
+# yield stress of 0.01 E many times over: its elements flow at random, in tension and in
+# compression, next to elements that do not
+HOT_BLOCK = SMALL_BLOCK + """variable vs equal 0.08*v_d/v_tau
 variable vx atom normal(0,${{vs}},4711)
 variable vy atom normal(0,${{vs}},4712)
 variable vz atom normal(0,${{vs}},4713)
@@ -259,7 +262,8 @@ def test_hot_block_yielding_at_random_keeps_its_energy_budget(units):
     errors = []
     for dt in (0.02, 0.01):
         with session() as lmp:
-            lmp.commands_list(HOT_BLOCK.format(Y=0.01, dt=dt, **BLOCK_UNITS[units])
+            lmp.commands_list(HOT_BLOCK.format(response="yield $(0.01*v_E)", dt=dt,
+                                               **BLOCK_UNITS[units])
                               .strip().splitlines())
             lmp.command("run 0")
             e0 = lmp.extract_variable("etot")
@@ -335,16 +339,7 @@ def test_plastic_block_yields_at_sigma_y(units, hardening):
 
 # a perfect periodic block, linked unstrained, then stretched along x at once (all its elements
 # alike): one radial return of each element's stress
-RETURN_BLOCK = BLOCK_HEAD + """{lattice}
-region box block 0 3 0 3 0 3
-create_box 1 box
-create_atoms 1 box
-set group all diameter ${{d}}
-variable phi equal PI/sqrt(18.0)
-pair_style mca fraction ${{phi}} tolerance 0.02
-pair_coeff 1 1 young ${{E}} poisson 0.3 {response}
-set group all density $({rho}/v_phi)
-neighbor $(0.2*v_d) bin
+RETURN_BLOCK = SMALL_BLOCK + """neighbor $(0.2*v_d) bin
 timestep $(1.0e-6*v_tau)
 fix move all nve/sphere
 compute s all mca/atom
