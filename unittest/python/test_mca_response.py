@@ -383,20 +383,27 @@ def test_one_return_reaches_the_hardened_yield_surface(units):
 
 # ---------------------------------------------------------------- welding, bad input
 
+def weld_dimer(lmp, units):
+    """An unlinked dimer (0.05 R apart at the first setup) of a material that welds at 0.01 G;
+    the overlap at which its contact's stress a |overlap| (a = G / R for equal elements)
+    reaches the weld stress.  Group two: the second element."""
+    radius, g = SCALE[units]
+    k = 2.5 * g
+    weld = 0.01 * g
+    dimer(lmp, units, radius, (k, g), gap=0.05 * radius,
+          extra=[f"pair_coeff 1 1 bulk {k} shear {g} weld {weld}", "compute pp all pair mca",
+                 "group two id 2"])
+    return weld / g * radius
+
+
 @pytest.mark.parametrize("units", ["lj", "si"])
 def test_pressed_contact_welds_and_then_holds_tension(units):
     """An unlinked dimer (apart at the first setup) pushed together until its pressure passes
     the weld stress (pressure units of each style) links (one link formed); short of it, it
     does not; welded, it holds in tension."""
-    radius, g = SCALE[units]
-    k = 2.5 * g
-    weld = 0.01 * g
+    radius, _ = SCALE[units]
     with session() as lmp:
-        dimer(lmp, units, radius, (k, g), gap=0.05 * radius,
-              extra=[f"pair_coeff 1 1 bulk {k} shear {g} weld {weld}", "compute pp all pair mca",
-                     "group two id 2"])
-        # the contact's stress a |overlap| (a = G / R for equal elements) against the weld stress
-        overlap = weld / g * radius
+        overlap = weld_dimer(lmp, units)
         lmp.commands_list([f"displace_atoms two move {-0.05 * radius - 0.9 * overlap} 0 0 "
                            "units box", "run 0"])
         assert tally(lmp)[1] == 0
@@ -414,14 +421,9 @@ def test_a_weld_tallies_the_many_body_energy_it_makes(units):
     stress: the weld links the pair where it is, so the pair's energy does not jump, but the
     link's volumetric strain gives its elements lambda Omega theta^2 / 2 each; that jump of pe
     is tallied as the energy of the changes (pvector[3], released: minus the jump)."""
-    radius, g = SCALE[units]
-    k = 2.5 * g
-    weld = 0.01 * g
+    radius, _ = SCALE[units]
     with session() as lmp:
-        dimer(lmp, units, radius, (k, g), gap=0.05 * radius,
-              extra=[f"pair_coeff 1 1 bulk {k} shear {g} weld {weld}", "compute pp all pair mca",
-                     "group two id 2"])
-        overlap = 1.2 * weld / g * radius
+        overlap = 1.2 * weld_dimer(lmp, units)
         lmp.commands_list([f"displace_atoms two move {-0.05 * radius - overlap} 0 0 units box",
                            "run 0"])
         pe_contact = lmp.get_thermo("pe")
