@@ -25,7 +25,7 @@ lammps_tarball=lammps_20250204+dfsg.1.orig.tar.xz
 lammps_sha256=3671165bd52fad36734e0a9136c5bc5ecb225e03988f8c89aa13366a8b53b1c7
 
 apt_packages=(build-essential cmake ninja-build pkg-config xz-utils dpkg-dev ca-certificates
-  libopenmpi-dev openmpi-bin libgtest-dev
+  libopenmpi-dev openmpi-bin libgtest-dev libeigen3-dev
   python3 python3-pytest python3-numpy python3-matplotlib python3-mpi4py python3-sfepy)
 
 # LAMMPS configuration: changing it changes the cache key
@@ -33,7 +33,7 @@ lammps_cmake_opts=(-DCMAKE_BUILD_TYPE=Release -DBUILD_SHARED_LIBS=on -DBUILD_MPI
   -DLAMMPS_EXCEPTIONS=on -DBUILD_TOOLS=off -DWITH_JPEG=off -DWITH_PNG=off -DWITH_FFMPEG=off
   -DWITH_GZIP=on -DPKG_PLUGIN=on -DPKG_OPENMP=on -DPKG_SHOCK=on -DPKG_EXTRA-PAIR=on
   -DPKG_EXTRA-COMPUTE=on -DPKG_EXTRA-FIX=on -DPKG_MOLECULE=on -DPKG_DPD-BASIC=on -DPKG_LEPTON=on
-  -DPKG_BPM=on -DPKG_GRANULAR=on -DPKG_PERI=on -DPKG_OPT=on
+  -DPKG_BPM=on -DPKG_GRANULAR=on -DPKG_PERI=on -DPKG_OPT=on -DPKG_MACHDYN=on -DDOWNLOAD_EIGEN3=no
   -DCMAKE_SKIP_INSTALL_RPATH=off -DCMAKE_BUILD_RPATH_USE_ORIGIN=on)
 
 say() { printf '[bootstrap] %s\n' "$*"; }

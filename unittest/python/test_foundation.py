@@ -98,3 +98,60 @@ def test_core_plugin_alone_loads_its_styles(tmp_path):
         assert lmp.has_style("pair", "morse/spline") and lmp.has_style("compute", "dust")
         assert not lmp.has_style("pair", "morse/spline/omp")
     assert "clusterdyn_omp.so not found; the /omp pair styles are not loaded" in log.read_text()
+
+
+# a free block of smd/tlsph particles (units si: aluminium, simple cubic of 1 mm, h = 2.01
+# spacings)
+# with the Mie-Grueneisen shock equation of state and linear plasticity, its left half set moving
+# at 100 m/s against its right half: the continuum model LAMMPS has for the plate impacts that
+# pair mca is compared with (MACHDYN, built with Debian's Eigen)
+TLSPH_BLOCK = """
+units si
+dimension 3
+boundary sm sm sm
+atom_style smd
+atom_modify map array
+comm_modify vel yes
+newton off
+lattice sc 0.001
+region box block 0 12 0 4 0 4
+create_box 1 box
+create_atoms 1 box
+group tlsph type 1
+set group all volume 1.0e-9
+set group all smd/mass/density 2700.0
+set group all diameter 0.00201
+neighbor 0.00201 bin
+region left block EDGE 6 EDGE EDGE EDGE EDGE
+group left region left
+velocity left set 100.0 0.0 0.0 units box
+pair_style smd/tlsph
+pair_coeff 1 1 *COMMON 2700.0 70.0e9 0.33 1.0 0.0 10.0 1.0 *EOS_SHOCK 5350.0 1.34 2.0 &
+  *STRENGTH_LINEAR_PLASTIC 0.3e9 0.0 *END
+fix dt tlsph smd/adjust_dt 0.1
+fix integrate tlsph smd/integrate_tlsph
+variable px equal mass(all)*vcm(all,x)
+thermo_style custom step v_px
+run 0
+variable p0 equal ${px}
+run 200
+"""
+
+
+def test_lammps_carries_the_packages_of_the_comparisons():
+    """The LAMMPS that tools/bootstrap.sh builds has the packages the comparisons need (BPM,
+    GRANULAR, PERI, OPT, SHOCK, MACHDYN), and smd/tlsph with *EOS_SHOCK and
+    *STRENGTH_LINEAR_PLASTIC runs: the moving half strikes the resting half, which starts to
+    move, and the block's momentum is kept (pairwise forces)."""
+    with session() as lmp:
+        for package in ("BPM", "GRANULAR", "PERI", "OPT", "SHOCK", "MACHDYN"):
+            assert lmp.has_package(package), package
+        lmp.commands_list(TLSPH_BLOCK.strip().replace("&\n", "").splitlines())
+        p0, p1 = lmp.extract_variable("p0"), lmp.extract_variable("px")
+        n = lmp.get_natoms()
+        vx = [v[0] for v in lmp.numpy.extract_atom("v")[:n]]
+        x = [r[0] for r in lmp.numpy.extract_atom("x")[:n]]
+    assert p0 > 0.0
+    assert p1 == pytest.approx(p0, rel=1e-9)
+    right_end = max(v for v, xx in zip(vx, x) if xx > 0.0095)
+    assert right_end > 1.0                        # the wave has reached the far end
