@@ -31,20 +31,22 @@ namespace ClusterDyn {
     // a pair's doubles, seen from the list's atom i (the partner's copy has the vectors
     // negated: partner_copy)
     enum {
-      REF = 0, AREA = 1, TAU = 2, DPREV = 5, KAPPA = 8, EPL = 9, SIG = 10, ROT = 11,
-      NVALUES = 14
+      REF = 0, AREA = 1, TAU = 2, DPREV = 5, KAPPA = 8, EPL = 9, SIG = 10, ROT = 11, HG = 14,
+      NVALUES = 15
     };
     // REF: the distance at linking (stress free); AREA: S_ij; TAU: the tangential stress on
     // i (3; effective, undamaged); DPREV: x_j - x_i at the last evaluation (3); KAPPA: the
     // largest effective equivalent stress (damage); EPL: the plastic elongation; SIG: the
     // trial normal stress of this step (plasticity); ROT: the rotation of j relative to i (3),
-    // turned with the contact's spin as TAU.  An unlinked contact uses TAU and DPREV.
+    // turned with the contact's spin as TAU; HG: the elongation beyond its elements' mean
+    // velocity gradient (the hourglass spring of a shock equation of state).  An unlinked
+    // contact uses TAU and DPREV.
 
     // the pair's doubles as its partner sees them (fix neigh/history's transfer_history): the
     // scalars copied, the vectors negated
     static void partner_copy(const double *source, double *target)
     {
-      for (const int k : {REF, AREA, KAPPA, EPL, SIG}) target[k] = source[k];
+      for (const int k : {REF, AREA, KAPPA, EPL, SIG, HG}) target[k] = source[k];
       for (int k = 0; k < 3; k++) {
         target[TAU + k] = -source[TAU + k];
         target[DPREV + k] = -source[DPREV + k];

@@ -9,8 +9,9 @@
    two elements and stores the plastic elongation; the relative rotation
    of the elements gives a moment (McaContact::moment); the pair's energy
    is S (a e^2 / 2 + |tau~|^2 / (2a)) + the moment's; from this step's
-   stresses (mca_response.h) the pair damages (from the next step) or
-   breaks (now).  Formulas: doc/pair_mca.rst.
+   stresses (mca_response.h), with the normal stress of the elements'
+   pressure (a shock equation of state, mca_element_eos.h), the pair
+   damages (from the next step) or breaks (now).  Formulas: doc/pair_mca.rst.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_CLUSTERDYN_MCA_LINKED_PAIR_H
@@ -99,13 +100,16 @@ namespace ClusterDyn {
     }
 
     // this step after the trial stress sigma: the plastic return by phi about mean (phi < 1),
-    // the rotation (turn: null where the elements do not turn), damage or breaking, the
-    // force; false: the pair breaks and transmits nothing from now on.  Inlined into the
+    // the rotation (turn: null where the elements do not turn), damage or breaking (under
+    // sigma and the normal stress of pressure, the effective force on i of the elements'
+    // pressure, null: none), the force; false: the pair breaks and transmits nothing from now
+    // on.  Inlined into the
     // force pass: as a call it costs 10 % of pair mca's Pair time (bench/bench_pair_ab.sh)
     [[gnu::always_inline]] bool step(double sigma, double phi, double mean, const McaPairFrame &p,
                                      const C::Turn *turn, const double *omega_i,
                                      const double *omega_j, double dt, const McaPairTally &tally,
-                                     bool energy_wanted, McaPairForce &out)
+                                     bool energy_wanted, const double *pressure,
+                                     McaPairForce &out)
     {
       if (phi < 1.0) {
         double dv;
@@ -116,7 +120,8 @@ namespace ClusterDyn {
       double moment[3], lost = 0.0;
       const double elong = elongation(p.r), tau2 = C::dot(v + C::TAU, v + C::TAU);
       const double epair = energy(p.n, elong, tau2, moment);
-      const Outcome outcome = respond(sigma, tau2, lost);
+      const double pushed = pressure ? C::dot(pressure, p.n) / area : 0.0;
+      const Outcome outcome = respond(sigma + pushed, tau2, lost);
       if (outcome != HOLDS)
         tally.volume_change(outcome == BREAKS ? McaManybody::CHANGE_STATE
                                               : McaManybody::CHANGE_DAMAGE, -lost * area * elong);
@@ -130,6 +135,7 @@ namespace ClusterDyn {
       for (int k = 0; k < 3; k++) {
         out.ft[k] = intact * area * tau[k];
         out.fi[k] = intact * area * sigma * p.n[k] + out.ft[k];
+        if (pressure) out.fi[k] += intact * pressure[k];
         out.mom[k] = intact * moment[k];
       }
       if (energy_wanted) out.evdwl = intact * epair;

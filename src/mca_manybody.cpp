@@ -57,7 +57,8 @@ void McaManybody::begin_changes(int nall)
     for (int c = 0; c < NCHANGES; c++) dtheta[i][c] = 0.0;
 }
 
-void McaManybody::tally_changes(StateTally &changes, int damage_work, int plastic_work)
+void McaManybody::tally_changes(StateTally &changes, int damage_work, int plastic_work,
+                                McaElementEos *heat)
 {
   exchange.to_owners(dtheta, NCHANGES);
   const int *type = atom->type;
@@ -75,6 +76,7 @@ void McaManybody::tally_changes(StateTally &changes, int damage_work, int plasti
     changes.ejump += released[CHANGE_STATE];
     changes.work[damage_work] += released[CHANGE_DAMAGE];
     changes.work[plastic_work] += released[CHANGE_PLASTIC];
+    if (heat) heat->add_heat(i, i, released[CHANGE_PLASTIC], 0.0, 1.0, false);    // all to i
   }
 }
 

@@ -18,6 +18,7 @@
 #ifndef LMP_CLUSTERDYN_MCA_MANYBODY_H
 #define LMP_CLUSTERDYN_MCA_MANYBODY_H
 
+#include "mca_element_eos.h"
 #include "mca_exchange.h"
 #include "mca_material.h"
 #include "atom.h"
@@ -74,7 +75,9 @@ namespace ClusterDyn {
       if (jown) dtheta[j][column] += dv * ai / (ai + aj);
     }
     // the energies they release: state changes to the jump, damage and plastic flow to work
-    void tally_changes(StateTally &changes, int damage_work, int plastic_work);
+    // (and the plastic flow's into the element's heat, where it has a shock law: heat)
+    void tally_changes(StateTally &changes, int damage_work, int plastic_work,
+                       McaElementEos *heat);
 
     // the elements' energies lambda Omega theta^2 / 2 added to the total and per atom (each
     // null: not wanted)

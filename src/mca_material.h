@@ -7,7 +7,11 @@
    damage from sigma_d up to sigma_c (b), von Mises yield sigma_y with
    linear hardening H (c; with strength: d); and the surface of its
    unlinked contacts: dry friction mu, viscous friction eta, welding
-   pressure.  Stresses in pressure units, eta in pressure / velocity.
+   pressure; or, for shocks, a Mie-Grueneisen equation of state on the
+   Hugoniot us = c0 + s up in place of the bulk modulus ("shock rho0 c0 s
+   Gamma0", K = rho0 c0^2; mca_shock_eos.h) with its bulk viscosity.
+   Stresses in pressure units, eta in pressure / velocity, rho0 in the
+   mass/volume units that "set density" takes.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_CLUSTERDYN_MCA_MATERIAL_H
@@ -17,6 +21,7 @@
 #include "keyword_set.h"
 
 #include "comm.h"
+#include "force.h"
 #include "utils.h"
 
 #include <cstdio>
@@ -37,8 +42,17 @@ namespace ClusterDyn {
     double friction = 0.0;   // mu of its unlinked contacts (dry, Coulomb)
     double viscous = 0.0;    // eta: tangential stress eta v_t of its unlinked contacts
     double weld = 0.0;       // an unlinked contact pressed at this stress links; 0: never
+    double rho0 = 0.0;       // shock: the reference density; 0: the linear law (bulk K)
+    double c0 = 0.0;         // shock: the bulk sound speed, K = rho0 c0^2
+    double slope = 0.0;      // shock: s of us = c0 + s up
+    double gruneisen = 0.0;  // shock: Gamma0
+    double b1 = 0.06;        // shock: linear bulk viscosity coefficient
+    double b2 = 1.2;         // shock: quadratic bulk viscosity coefficient
+    double hourglass = 1.0;  // shock: the hourglass spring, in units of 2 (K + 4G/3) / R
 
-    enum { NRESTART = 9 };
+    enum { NRESTART = 16 };
+
+    bool shock() const { return c0 > 0.0; }
 
     double young() const { return 9.0 * bulk * shear / (3.0 * bulk + shear); }
     double poisson() const { return (3.0 * bulk - 2.0 * shear) / (2.0 * (3.0 * bulk + shear)); }
@@ -46,7 +60,11 @@ namespace ClusterDyn {
     // the words of pair_coeff that give this material back (data files)
     std::string words() const
     {
-      std::string w = fmt::format("bulk {:.17g} shear {:.17g}", bulk, shear);
+      std::string w = shock()
+          ? fmt::format("shock {:.17g} {:.17g} {:.17g} {:.17g} bulk_viscosity {:.17g} {:.17g} "
+                        "hourglass {:.17g} shear {:.17g}", rho0, c0, slope, gruneisen, b1, b2,
+                        hourglass, shear)
+          : fmt::format("bulk {:.17g} shear {:.17g}", bulk, shear);
       const std::pair<const char *, double> more[] = {
           {"strength", strength}, {"damage", damage},     {"yield", yield},
           {"hardening", hardening}, {"friction", friction}, {"viscous", viscous},
@@ -58,8 +76,9 @@ namespace ClusterDyn {
 
     void write_restart(FILE *fp) const
     {
-      const double v[NRESTART] = {bulk,      shear,    strength, damage, yield,
-                                  hardening, friction, viscous,  weld};
+      const double v[NRESTART] = {bulk,     shear, strength, damage, yield,     hardening,
+                                  friction, viscous, weld,   rho0,   c0,        slope,
+                                  gruneisen, b1,     b2,     hourglass};
       fwrite(v, sizeof(double), NRESTART, fp);
     }
 
@@ -78,8 +97,20 @@ namespace ClusterDyn {
       friction = v[6];
       viscous = v[7];
       weld = v[8];
-      lambda = bulk - 2.0 * shear / 3.0;
+      rho0 = v[9];
+      c0 = v[10];
+      slope = v[11];
+      gruneisen = v[12];
+      b1 = v[13];
+      b2 = v[14];
+      hourglass = v[15];
+      lambda = volumetric_lambda();
     }
+
+    // the many-body term's modulus: K - 2G/3 (Lame's lambda); with a shock equation of state
+    // the pressure acts apart (mca_element_eos.h) and the term only takes the volumetric part
+    // of the pairs' 2G eps out, -2G/3
+    double volumetric_lambda() const { return (shock() ? 0.0 : bulk) - 2.0 * shear / 3.0; }
 
     // the stresses in energy/volume: pressure / nktv2p (eta likewise)
     McaMaterial scaled(double p2e) const
@@ -91,17 +122,21 @@ namespace ClusterDyn {
       return m;
     }
 
-    // pair_coeff I I bulk K shear G | young E poisson nu [strength S [damage Sd]]
-    //   [yield Y [hardening H]] [friction mu] [viscous eta] [weld P]   (words after I I)
+    // pair_coeff I I bulk K shear G | young E poisson nu | shock rho0 c0 s Gamma0 shear G
+    //   [bulk_viscosity b1 b2] [strength S [damage Sd]] [yield Y [hardening H]]
+    //   [friction mu] [viscous eta] [weld P]   (words after I I)
     static McaMaterial read(const std::string &who, int narg, char **arg, LAMMPS *lmp)
     {
       KeywordSet seen(lmp, who);
       double k = -1.0, g = -1.0, e = -1.0, nu = 2.0;
+      bool viscosity_given = false, hourglass_given = false;
       McaMaterial m;
-      for (int i = 0; i < narg; i += 2) {
+      for (int i = 0; i < narg;) {
         const std::string key = arg[i];
-        if (i + 1 >= narg && is_keyword(key))
-          lmp->error->all(FLERR, "{}: {} needs a value", who, key);
+        const int count = values_of(key);
+        if (i + count >= narg && count > 0)
+          lmp->error->all(FLERR, "{}: {} needs {}", who, key,
+                          count > 1 ? fmt::format("{} values", count) : std::string("a value"));
         seen.add(key);
         const char *val = arg[i + 1 < narg ? i + 1 : i];
         if (key == "bulk") k = positive_arg(who, "bulk modulus K", val, lmp);
@@ -114,16 +149,44 @@ namespace ClusterDyn {
         else if (key == "friction") m.friction = nonnegative(who, "friction (mu)", val, lmp);
         else if (key == "viscous") m.viscous = nonnegative(who, "viscous (eta)", val, lmp);
         else if (key == "weld") m.weld = positive_arg(who, "weld (pressure)", val, lmp);
-        else if (key == "poisson") {
+        else if (key == "shock") {
+          m.rho0 = positive_arg(who, "shock rho0 (density)", arg[i + 1], lmp);
+          m.c0 = positive_arg(who, "shock c0 (bulk sound speed)", arg[i + 2], lmp);
+          m.slope = nonnegative(who, "shock s (slope of us = c0 + s up)", arg[i + 3], lmp);
+          m.gruneisen = nonnegative(who, "shock Gamma0 (Grueneisen parameter)", arg[i + 4], lmp);
+          if (m.slope > 10.0)
+            lmp->error->all(FLERR, "{}: shock s of {} is not the slope of a metal's Hugoniot "
+                            "us = c0 + s up (0 to 10)", who, arg[i + 3]);
+          if (m.gruneisen > 10.0)
+            lmp->error->all(FLERR, "{}: shock Gamma0 of {} is not a Grueneisen parameter (0 to "
+                            "10)", who, arg[i + 4]);
+        } else if (key == "bulk_viscosity") {
+          m.b1 = nonnegative(who, "bulk_viscosity b1 (linear)", arg[i + 1], lmp);
+          m.b2 = nonnegative(who, "bulk_viscosity b2 (quadratic)", arg[i + 2], lmp);
+          viscosity_given = true;
+        } else if (key == "hourglass") {
+          m.hourglass = nonnegative(who, "hourglass (coefficient)", val, lmp);
+          hourglass_given = true;
+        } else if (key == "poisson") {
           nu = number_arg(who, "Poisson's ratio nu", val, lmp);
           if (!(nu > -1.0 && nu < 0.5))
             lmp->error->all(FLERR, "{}: Poisson's ratio nu must lie in (-1, 0.5) (got {})", who,
                             val);
         } else
-          lmp->error->all(FLERR, "{}: unknown keyword '{}' (expected bulk K shear G or young E "
-                          "poisson nu; strength, damage, yield, hardening, friction, viscous, "
-                          "weld)", who, key);
+          lmp->error->all(FLERR, "{}: unknown keyword '{}' (expected bulk K shear G, young E "
+                          "poisson nu, or shock rho0 c0 s Gamma0 shear G; strength, damage, "
+                          "yield, hardening, friction, viscous, weld, bulk_viscosity, hourglass)", who, key);
+        i += 1 + count;
       }
+      if (m.shock()) {
+        if (k > 0.0 || e > 0.0 || nu < 2.0)
+          lmp->error->all(FLERR, "{}: shock gives the bulk modulus K = rho0 c0^2: give shear G "
+                          "with it, not bulk, young or poisson", who);
+        if (g < 0.0) lmp->error->all(FLERR, "{}: shock needs shear G", who);
+        k = m.rho0 * m.c0 * m.c0 * lmp->force->mvv2e * lmp->force->nktv2p;
+      } else if (viscosity_given || hourglass_given)
+        lmp->error->all(FLERR, "{}: {} needs shock (the equation of state it stabilises)", who,
+                        viscosity_given ? "bulk_viscosity" : "hourglass");
       const bool kg = k > 0.0 || g > 0.0, enu = e > 0.0 || nu < 2.0;
       if (kg == enu || (kg && (k < 0.0 || g < 0.0)) || (enu && (e < 0.0 || nu > 1.0)))
         lmp->error->all(FLERR, "{}: give bulk K shear G, or young E poisson nu", who);
@@ -142,17 +205,20 @@ namespace ClusterDyn {
                         m.friction);
       m.bulk = kg ? k : e / (3.0 * (1.0 - 2.0 * nu));
       m.shear = kg ? g : e / (2.0 * (1.0 + nu));
-      m.lambda = m.bulk - 2.0 * m.shear / 3.0;
+      m.lambda = m.volumetric_lambda();
       return m;
     }
 
    private:
-    static bool is_keyword(const std::string &key)
+    // the values a keyword takes (0: not a keyword)
+    static int values_of(const std::string &key)
     {
+      if (key == "shock") return 4;
+      if (key == "bulk_viscosity") return 2;
       for (const char *k : {"bulk", "shear", "young", "poisson", "strength", "damage", "yield",
-                            "hardening", "friction", "viscous", "weld"})
-        if (key == k) return true;
-      return false;
+                            "hardening", "friction", "viscous", "weld", "hourglass"})
+        if (key == k) return 1;
+      return 0;
     }
     static double nonnegative(const std::string &who, const char *name, const char *val,
                               LAMMPS *lmp)

@@ -5,13 +5,15 @@
    pair's energy (McaPairForce); and where it tallies what it changes
    (McaPairTally): the state counts and energies of the pair state (a pair
    with a ghost counts w = 1/2 with newton off, as both processors see it),
-   the dissipated works, and the changes of volume that the many-body term
-   follows (mca_manybody.h).
+   the dissipated works, the changes of volume that the many-body term
+   follows (mca_manybody.h), and the plastic work that heats elements with a
+   shock equation of state (mca_element_eos.h).
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_CLUSTERDYN_MCA_PAIR_TALLY_H
 #define LMP_CLUSTERDYN_MCA_PAIR_TALLY_H
 
+#include "mca_element_eos.h"
 #include "mca_manybody.h"
 #include "pair_state.h"
 
@@ -32,8 +34,13 @@ namespace ClusterDyn {
     int i, j;
     double ai, aj;            // the elements' half stiffnesses
     bool jown;                // j's side is tallied here
+    McaElementEos *heat;      // null: no element takes the plastic work as heat
 
-    void work(McaWork kind, double energy) const { changes.work[kind] += w * energy; }
+    void work(McaWork kind, double energy) const
+    {
+      changes.work[kind] += w * energy;
+      if (kind == WORK_PLASTIC && heat) heat->add_heat(i, j, energy, ai, aj, jown);
+    }
     void volume_change(int column, double dv) const
     {
       if (volume) volume->add_change(column, i, j, dv, ai, aj, jown);

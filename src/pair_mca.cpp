@@ -37,7 +37,7 @@ using C = McaContact;
 
 PairMCA::PairMCA(LAMMPS *lmp) :
     PairColumnExchange(lmp), types(lmp), guard(lmp), plasticity(lmp, *this), manybody(lmp, *this), stress(lmp, *this),
-    state(lmp, this, "Pair mca", C::NVALUES, NWORK), tracks_changes(false), linking(lmp, *this),
+    eos(lmp, *this), state(lmp, this, "Pair mca", C::NVALUES, NWORK), tracks_changes(false), linking(lmp, *this),
     stiffness(nullptr), nmax(0)
 {
   single_enable = 0;
@@ -47,8 +47,9 @@ PairMCA::PairMCA(LAMMPS *lmp) :
   nondefault_history_transfer = 1;
   beyond_contact = 1;    // fix neigh/history keeps every listed pair's state, not only contacts
   // the most columns a component sends to ghosts or sums onto owners (PairColumnExchange)
-  comm_forward = McaPlasticity::COLUMNS;
-  comm_reverse = std::max<int>(McaElementStress::COLUMNS, McaManybody::NCHANGES);
+  comm_forward = std::max<int>(McaPlasticity::COLUMNS, McaElementEos::FORWARD);
+  comm_reverse = std::max<int>(std::max<int>(McaElementStress::COLUMNS, McaManybody::NCHANGES),
+                               McaElementEos::SUMS);
   // pvector: broken links, links formed, the energy of those changes, then the energy dissipated
   // by damage, by plastic flow and by friction (McaWork; all since the links were made)
   nextra = 3 + NWORK;
@@ -70,6 +71,7 @@ void PairMCA::grow(int nall)
   manybody.grow(atom->nmax);
   stress.grow(atom->nmax);
   plasticity.grow(atom->nmax);
+  if (eos.active()) eos.grow(atom->nmax);
   if (nall <= nmax) return;
   nmax = atom->nmax;
   memory->destroy(stiffness);
@@ -93,29 +95,44 @@ void PairMCA::compute(int eflag, int vflag)
   if (plasticity.active()) plastic_trial(pass);
   StateTally changes;
   pair_forces(pass, changes);
-  if (tracks_changes) manybody.tally_changes(changes, WORK_DAMAGE, WORK_PLASTIC);
+  if (tracks_changes)
+    manybody.tally_changes(changes, WORK_DAMAGE, WORK_PLASTIC, eos.active() ? &eos : nullptr);
+  if (eos.active()) eos.finish_heat();
   if (setting.manybody && eflag) manybody.tally_energy(eflag_global ? &eng_vdwl : nullptr,
                                                        eflag_atom ? eatom : nullptr);
+  if (eos.active() && eflag)
+    eos.tally_energy(eflag_global ? &eng_vdwl : nullptr, eflag_atom ? eatom : nullptr);
   if (vflag_fdotr) virial_fdotr_compute();
   state.end(changes, pvector);
 }
 
-// theta of every element from the elongations of its linked pairs (mca_manybody.h)
+// theta of every element from the elongations of its linked pairs (mca_manybody.h); with a
+// shock law, its shape and velocity sums, then its volume, energy and pressure
+// (mca_element_eos.h)
 void PairMCA::volumetric_strain(const StatePass &pass)
 {
   const int nlocal = atom->nlocal;
   const int newton = force->newton_pair;
+  const bool pressure = eos.active();
+  double **vel = atom->v;
   manybody.begin_strain(nlocal + atom->nghost);
+  if (pressure) eos.begin(nlocal + atom->nghost);
   walk_pairs(list, [&](int i, int j, int jj) {
     if (!state_now(pass.words[i][jj])) return;
     const double *v = pass.pair_values(i, jj);
     const McaPairFrame p(atom->x, i, j);
     const McaResponse &resp = types.model(atom->type[i], atom->type[j]).response;
-    const double elong =
-        resp.intact(v[C::KAPPA]) * v[C::AREA] * McaLinkedPair::elongation(v, sqrt(p.rsq));
-    manybody.add_elongation(i, j, elong, stiffness[i], stiffness[j], newton || j < nlocal);
+    const double carried = resp.intact(v[C::KAPPA]) * v[C::AREA];
+    const double elong = carried * McaLinkedPair::elongation(v, sqrt(p.rsq));
+    const bool jown = newton || j < nlocal;
+    manybody.add_elongation(i, j, elong, stiffness[i], stiffness[j], jown);
+    if (pressure) {
+      const double dv[3] = {vel[j][0] - vel[i][0], vel[j][1] - vel[i][1], vel[j][2] - vel[i][2]};
+      eos.add_pair(i, j, p.d, v + C::DPREV, dv, carried / v[C::REF], jown);
+    }
   });
   manybody.finish_strain();
+  if (pressure) eos.finish(elements_turn(), update->dt);
 }
 
 /* ----------------------------------------------------------------------
@@ -177,6 +194,7 @@ void PairMCA::pair_forces(const StatePass &pass, StateTally &changes)
   const double dt = update->dt;
   if (stress.wanted()) stress.zero(nall);
   if (tracks_changes) manybody.begin_changes(nall);
+  if (eos.active()) eos.begin_heat(nall);
 
   walk_pairs(list, [&](int i, int j, int jj) {
     const double ri = radius[i], rj = radius[j];
@@ -192,7 +210,7 @@ void PairMCA::pair_forces(const StatePass &pass, StateTally &changes)
     const double ai = stiffness[i], aj = stiffness[j], a = C::series(ai, aj);
     const bool jown = newton || j < nlocal;
     const McaPairTally tally{changes, jown ? 1.0 : 0.5, tracks_changes ? &manybody : nullptr,
-                             i, j, ai, aj, jown};
+                             i, j, ai, aj, jown, eos.active() ? &eos : nullptr};
     const C::Turn turn = p.turn(omega[i], omega[j], dt);    // of the pair's stored vectors
     const C::Turn *turning = moving ? &turn : nullptr;
     const McaPairModel &model = types.model(atom->type[i], atom->type[j]);
@@ -202,12 +220,15 @@ void PairMCA::pair_forces(const StatePass &pass, StateTally &changes)
       McaLinkedPair link(model.response, v, a);
       const double sigma = plastic ? v[C::SIG] : trial_stresses(i, j, v, p, turning);
       const double phi = plastic ? plasticity.phi(i, j) : 1.0;
-      const double mean = phi < 1.0 ? plasticity.mean(i, j) : 0.0;
+      const double mean = phi < 1.0 && !eos.active() ? plasticity.mean(i, j) : 0.0;
+      double pushed[3], ehg = 0.0;
+      if (eos.active()) ehg = pressure_forces(i, j, v, p, vel, pushed);
       if (!link.step(sigma, phi, mean, p, turning, omega[i], omega[j], dt, tally, eflag_either,
-                     out)) {
+                     eos.active() ? pushed : nullptr, out)) {
         word = state_word(word, 0, pass.trial);    // from now on an unlinked pair, apart
         return;
       }
+      if (eflag_either) out.evdwl += link.intact * ehg;
     } else {
       McaUnlinkedPair(ri, rj, a, p.r)
           .step(model, word, pass.trial, v, p, turning, a, vel, omega, dt, tally, eflag_either, out);
@@ -245,6 +266,31 @@ double PairMCA::trial_stresses(int i, int j, double *v, const McaPairFrame &p, c
   if (setting.manybody) sigma += manybody.pair_stress(i, j, ai, aj);
   C::slide(v + C::TAU, v + C::DPREV, p.d, p.n, turn, a);
   return sigma;
+}
+
+// a linked pair's effective force on i from its elements' pressure (mca_element_eos.h) and
+// its hourglass spring: the elongation beyond the elements' velocity gradients, advanced by a
+// dynamics step, pulls with the stiffness of 2 H (K + 4G/3) / R per half; returns the
+// spring's effective energy
+double PairMCA::pressure_forces(int i, int j, double *v, const McaPairFrame &p, double **vel,
+                                double *force)
+{
+  eos.pair_force(i, j, p.d, v[C::AREA] / v[C::REF], force);
+  double rate;
+  if (!eos.affine_rate(i, j, p.n, p.r, rate)) return 0.0;
+  if (vel && elements_turn()) {
+    double dv[3];
+    for (int k = 0; k < 3; k++) dv[k] = vel[j][k] - vel[i][k];
+    v[C::HG] += update->dt * (C::dot(dv, p.n) - rate);
+  }
+  const std::vector<McaMaterial> &m = types.scaled();
+  const McaMaterial &mi = m[atom->type[i]], &mj = m[atom->type[j]];
+  const double bi = 2.0 * mi.hourglass * (mi.bulk + 4.0 * mi.shear / 3.0) / atom->radius[i];
+  const double bj = 2.0 * mj.hourglass * (mj.bulk + 4.0 * mj.shear / 3.0) / atom->radius[j];
+  if (bi + bj == 0.0) return 0.0;
+  const double b = C::series(bi, bj), pull = v[C::AREA] * b * v[C::HG];
+  for (int k = 0; k < 3; k++) force[k] += pull * p.n[k];
+  return 0.5 * pull * v[C::HG];
 }
 
 // a setup re-evaluates the same positions; a minimizer does not turn the elements
@@ -290,6 +336,13 @@ void PairMCA::init_style()
   types.init();
   tracks_changes = setting.manybody && types.responds();
   manybody.init(types.scaled(), setting.fraction);
+  eos.init(types.scaled(), setting.fraction);
+  if (eos.active() && !setting.manybody)
+    error->all(FLERR, "Pair mca: a shock equation of state (pair_coeff ... shock) needs the "
+               "many-body term: remove 'manybody no'");
+  if (eos.active() && update->whichflag == 2)
+    error->all(FLERR, "Pair mca: the elements' shock equation of state follows their volume "
+               "through a run; minimize cannot move it (use the linear law, bulk K)");
   stress.init(setting.fraction);
   plasticity.init(types.as_given());
   neighbor->add_request(this, NeighConst::REQ_HISTORY);
@@ -353,5 +406,5 @@ void PairMCA::read_restart_settings(FILE *fp)
 double PairMCA::memory_usage()
 {
   return (double) nmax * sizeof(double) + manybody.memory_usage() + stress.memory_usage() +
-      plasticity.memory_usage();
+      plasticity.memory_usage() + eos.memory_usage();
 }

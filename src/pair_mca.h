@@ -24,6 +24,7 @@ PairStyle(mca,PairMCA);
 #ifndef LMP_CLUSTERDYN_PAIR_MCA_H
 #define LMP_CLUSTERDYN_PAIR_MCA_H
 
+#include "mca_element_eos.h"
 #include "mca_element_stress.h"
 #include "mca_guard.h"
 #include "mca_linking.h"
@@ -61,6 +62,8 @@ namespace ClusterDyn {
     void request_element_stress() { stress.request(); }
     double **element_stress() const { return stress.current(); }
     double packing_fraction() const { return setting.fraction; }
+    // for compute mca/atom: the elements' shock equation of state (McaElementEos)
+    const McaElementEos &element_eos() const { return eos; }
 
    private:
     McaSettings setting;
@@ -69,6 +72,7 @@ namespace ClusterDyn {
     McaPlasticity plasticity;
     McaManybody manybody;
     McaElementStress stress;
+    McaElementEos eos;                    // the pressure of elements with a shock law
     PairState state;
     bool tracks_changes;                  // the many-body term follows breaking, damage, flow
     McaLinking linking;
@@ -83,6 +87,8 @@ namespace ClusterDyn {
     double trial_stresses(int i, int j, double *v, const McaPairFrame &p,
                           const McaContact::Turn *turn);
     bool elements_turn() const;
+    double pressure_forces(int i, int j, double *v, const McaPairFrame &p, double **vel,
+                           double *force);
   };
 
 }    // namespace ClusterDyn

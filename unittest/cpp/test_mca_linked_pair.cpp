@@ -109,13 +109,37 @@ TEST(McaLinkedPair, StepTransmitsTheIntactShareOrBreaks)
   const McaPairFrame p = frame_along_x(r);
   const double omega[3] = {0.0, 0.0, 0.0};
   McaLinkedPair law(response, link.v, a);
-  ASSERT_TRUE(law.step(0.5, 1.0, 0.0, p, nullptr, omega, omega, 0.01, tally, true, out));
+  ASSERT_TRUE(law.step(0.5, 1.0, 0.0, p, nullptr, omega, omega, 0.01, tally, true, nullptr, out));
   EXPECT_NEAR(out.fi[0], 0.3 * 0.5, 1e-15);
   EXPECT_NEAR(out.evdwl, 0.3 * 0.5 * a * 0.05 * 0.05, 1e-15);
   EXPECT_EQ(changes.broken, 0.0);
   const double energy = out.evdwl;
   McaLinkedPair again(response, link.v, a);
-  EXPECT_FALSE(again.step(1.0, 1.0, 0.0, p, nullptr, omega, omega, 0.01, tally, true, out));
+  EXPECT_FALSE(again.step(1.0, 1.0, 0.0, p, nullptr, omega, omega, 0.01, tally, true, nullptr, out));
   EXPECT_EQ(changes.broken, 0.5);                         // a pair with a ghost, newton off
   EXPECT_NEAR(changes.ejump, 0.5 * energy, 1e-15);        // the energy it took with it
+}
+
+TEST(McaLinkedPair, PressureAddsItsForceAndItsNormalStressBreaks)
+{
+  // strength 1; the pair's own stress 0.5 holds, with a pull of the elements' (negative)
+  // pressure of 0.6 through area 0.3 it breaks; pushed together by pressure it holds and
+  // transmits the pressure's force (intact share 1)
+  const McaResponse response{1.0, 0.0};
+  const double a = 10.0, r = 1.05;
+  Link link(1.0, 0.3);
+  StateTally changes;
+  const McaPairTally tally{changes, 1.0, nullptr, 0, 1, 1.0, 1.0, true};
+  McaPairForce out;
+  const McaPairFrame p = frame_along_x(r);
+  const double omega[3] = {0.0, 0.0, 0.0};
+  const double push[3] = {-0.3 * 0.6, 0.01, 0.0};    // on i, away from j: compression
+  McaLinkedPair law(response, link.v, a);
+  ASSERT_TRUE(law.step(0.5, 1.0, 0.0, p, nullptr, omega, omega, 0.01, tally, true, push, out));
+  EXPECT_NEAR(out.fi[0], 0.3 * 0.5 - 0.3 * 0.6, 1e-15);
+  EXPECT_NEAR(out.fi[1], 0.01, 1e-15);
+  const double pull[3] = {0.3 * 0.6, 0.0, 0.0};       // towards j: tension
+  McaLinkedPair again(response, link.v, a);
+  EXPECT_FALSE(again.step(0.5, 1.0, 0.0, p, nullptr, omega, omega, 0.01, tally, true, pull, out));
+  EXPECT_EQ(changes.broken, 1.0);
 }

@@ -1,0 +1,252 @@
+/* ----------------------------------------------------------------------
+   Cluster-dynamics plugin for LAMMPS: the pressure of the elements of
+   pair_style mca with a shock equation of state (see mca_element_eos.h).
+------------------------------------------------------------------------- */
+
+#include "mca_element_eos.h"
+
+#include "mca_element.h"
+
+#include "atom.h"
+#include "error.h"
+#include "fix_property_atom.h"
+#include "force.h"
+#include "memory.h"
+#include "modify.h"
+
+#include <cmath>
+#include <cstdlib>
+
+using namespace LAMMPS_NS;
+using namespace ClusterDyn;
+
+McaElementEos::McaElementEos(LAMMPS *lmp, McaExchange &exchange) :
+    Pointers(lmp), exchange(exchange), sums(nullptr), pressures(nullptr), heat(nullptr), nmax(0), fraction(1.0),
+    scaled(nullptr), store(nullptr), dvolume(-1), energy(-1), visc(-1)
+{
+}
+
+McaElementEos::~McaElementEos()
+{
+  memory->destroy(sums);
+  memory->destroy(pressures);
+  memory->destroy(heat);
+  // the elements' state goes with the style (a new pair_style starts afresh), as pair
+  // granular's history
+  if (store && modify->nfix) modify->delete_fix(FIX_ID);
+}
+
+void McaElementEos::init(const std::vector<McaMaterial> &materials, double packing_fraction)
+{
+  scaled = &materials;
+  fraction = packing_fraction;
+  laws.clear();
+  bool any = false;
+  for (const McaMaterial &m : materials) any = any || m.shock();
+  if (!any) return;
+  for (const McaMaterial &m : materials)
+    laws.push_back(m.shock() ? McaShockEos{m.bulk, m.slope, m.gruneisen, m.b1, m.b2}
+                             : McaShockEos{});
+  store = dynamic_cast<FixPropertyAtom *>(modify->get_fix_by_id(FIX_ID));
+  if (!store)
+    store = dynamic_cast<FixPropertyAtom *>(modify->add_fix(
+        fmt::format("{} all property/atom d_mca_dvolume d_mca_energy d_mca_viscosity", FIX_ID)));
+  int flag, cols;
+  dvolume = atom->find_custom("mca_dvolume", flag, cols);
+  energy = atom->find_custom("mca_energy", flag, cols);
+  visc = atom->find_custom("mca_viscosity", flag, cols);
+  if (!store || dvolume < 0 || energy < 0 || visc < 0)
+    error->all(FLERR, "Pair mca: the elements' equation-of-state state (fix {} property/atom "
+               "d_mca_dvolume d_mca_energy d_mca_viscosity) is missing or taken", FIX_ID);
+  check_densities();
+}
+
+void McaElementEos::grow(int nmax_atoms)
+{
+  if (nmax_atoms <= nmax) return;
+  nmax = nmax_atoms;
+  memory->destroy(sums);
+  memory->destroy(pressures);
+  memory->destroy(heat);
+  memory->create(heat, nmax, 1, "pair:eos_heat");
+  memory->create(sums, nmax, SUMS, "pair:eos_sums");
+  memory->create(pressures, nmax, FORWARD, "pair:eos_pressures");
+}
+
+double McaElementEos::memory_usage() const
+{
+  return (double) nmax * (SUMS + FORWARD + 1) * sizeof(double);
+}
+
+double McaElementEos::volume(int i) const
+{
+  return McaElement::volume(atom->radius[i], fraction);
+}
+
+// the mass of an element is rho0 Omega ("set density rho0/F"): an element of another density
+// would carry its pressure at the wrong sound speed
+void McaElementEos::check_densities() const
+{
+  const int *type = atom->type;
+  int bad = -1;
+  double found = 0.0, wanted = 0.0;
+  for (int i = 0; i < atom->nlocal && bad < 0; i++) {
+    const McaMaterial &m = (*scaled)[type[i]];
+    if (!m.shock() || atom->radius[i] <= 0.0) continue;
+    const double rho = atom->rmass[i] / volume(i);
+    if (std::fabs(rho / m.rho0 - 1.0) > 1.0e-3) {
+      bad = type[i];
+      found = rho;
+      wanted = m.rho0;
+    }
+  }
+  int any = bad, worst;
+  MPI_Allreduce(&any, &worst, 1, MPI_INT, MPI_MAX, world);
+  if (worst < 0) return;
+  if (bad >= 0)
+    error->one(FLERR, "Pair mca: elements of type {} have the density {:.6g} (mass / element "
+               "volume), not their shock rho0 {:.6g}: give them 'set ... density rho0/F' with F "
+               "the fraction", bad, found, wanted);
+  error->all(FLERR, "Pair mca: elements have another density than their shock rho0");
+}
+
+void McaElementEos::begin(int nall)
+{
+  for (int i = 0; i < nall; i++)
+    for (int k = 0; k < SUMS; k++) sums[i][k] = 0.0;
+}
+
+void McaElementEos::finish(bool advance, double dt)
+{
+  exchange.to_owners(sums, SUMS);
+  for (int i = 0; i < atom->nlocal; i++)
+    if (!advance_element(i, advance ? dt : 0.0))
+      for (int k = 0; k < FORWARD; k++) pressures[i][k] = 0.0;
+  exchange.to_ghosts(pressures, FORWARD);
+}
+
+namespace {
+  // the inverse of the symmetric K (xx yy zz xy xz yz); false: it spans no volume
+  bool invert(const double *s, double *inv)
+  {
+    const double tr = s[0] + s[1] + s[2];
+    const double det = s[0] * (s[1] * s[2] - s[5] * s[5]) - s[3] * (s[3] * s[2] - s[5] * s[4]) +
+        s[4] * (s[3] * s[5] - s[1] * s[4]);
+    if (!(tr > 0.0) || det < 1.0e-3 * tr * tr * tr / 27.0) return false;
+    inv[0] = (s[1] * s[2] - s[5] * s[5]) / det;
+    inv[1] = (s[0] * s[2] - s[4] * s[4]) / det;
+    inv[2] = (s[0] * s[1] - s[3] * s[3]) / det;
+    inv[3] = (s[4] * s[5] - s[3] * s[2]) / det;
+    inv[4] = (s[3] * s[5] - s[4] * s[1]) / det;
+    inv[5] = (s[3] * s[4] - s[0] * s[5]) / det;
+    return true;
+  }
+
+  // L = M K^-1 (M row-major after K's 6 sums)
+  void gradient(const double *s, const double *inv, double grad[3][3])
+  {
+    const double kinv[3][3] = {{inv[0], inv[3], inv[4]}, {inv[3], inv[1], inv[5]},
+                               {inv[4], inv[5], inv[2]}};
+    for (int a = 0; a < 3; a++)
+      for (int b = 0; b < 3; b++)
+        grad[a][b] = s[6 + 3 * a] * kinv[0][b] + s[7 + 3 * a] * kinv[1][b] +
+            s[8 + 3 * a] * kinv[2][b];
+  }
+}    // namespace
+
+// element i over dt (0: no step, the pressure of its state): its volume ratio and energy, its
+// pressure tensor P = (p + q) Omega J K^-1 and velocity gradient; false: it has no shock law
+// or no volume
+bool McaElementEos::advance_element(int i, double dt)
+{
+  const int type = atom->type[i];
+  if (laws[type].bulk == 0.0) return false;
+  double inv[6];
+  if (!invert(sums[i], inv)) {
+    atom->dvector[visc][i] = 0.0;
+    return false;
+  }
+  double grad[3][3];
+  gradient(sums[i], inv, grad);
+  const double trace = grad[0][0] + grad[1][1] + grad[2][2];
+  double *out = pressures[i];
+  const double sym[6] = {grad[0][0], grad[1][1], grad[2][2], 0.5 * (grad[0][1] + grad[1][0]),
+                         0.5 * (grad[0][2] + grad[2][0]), 0.5 * (grad[1][2] + grad[2][1])};
+  for (int k = 0; k < 6; k++) out[GRADIENT + k] = sym[k];
+  out[HAS_VOLUME] = 1.0;
+  const McaShockEos &law = laws[type];
+  double &dvol = atom->dvector[dvolume][i], &u = atom->dvector[energy][i];
+  double &q = atom->dvector[visc][i];
+  double j1 = 1.0 + dvol;
+  if (dt > 0.0) {
+    // the rate at the last step's separations (as this one's where they spanned no volume)
+    double before = trace, inv0[6], grad0[3][3];
+    if (invert(sums[i] + SHAPE, inv0)) {
+      gradient(sums[i] + SHAPE, inv0, grad0);
+      before = grad0[0][0] + grad0[1][1] + grad0[2][2];
+    }
+    const McaMaterial &m = (*scaled)[type];
+    const double j0 = j1, rate = 0.5 * (before + trace);
+    j1 = j0 * exp(rate * dt);
+    if (!(j1 > law.limit())) beyond_limit(i, j1);
+    const double w0 = 0.5 * dt * (law.pressure(j0, u) + q) * j0 * before;
+    q = force->mvv2e * law.viscosity(-rate, m.rho0 / j1, m.c0, 2.0 * atom->radius[i]);
+    u = law.energy_after(u, w0, j1, q, 0.5 * dt * j1 * trace);
+    dvol = j1 - 1.0;
+  }
+  const double scale = (law.pressure(j1, u) + q) * volume(i) * j1;
+  for (int k = 0; k < 6; k++) out[k] = scale * inv[k];
+  return true;
+}
+
+void McaElementEos::beyond_limit(int i, double ratio) const
+{
+  const McaShockEos &law = laws[atom->type[i]];
+  error->one(FLERR, "Pair mca: element {} compressed to V/V0 = {:.4g}, beyond the limit 1 - 1/s "
+             "= {:.4g} of its shock equation of state (a shock too strong for this s, or a time "
+             "step too long)", atom->tag[i], ratio, law.limit());
+  std::abort();    // not reached: error->one() throws
+}
+
+void McaElementEos::begin_heat(int nall)
+{
+  for (int i = 0; i < nall; i++) heat[i][0] = 0.0;
+}
+
+void McaElementEos::finish_heat()
+{
+  exchange.to_owners(heat, 1);
+  for (int i = 0; i < atom->nlocal; i++)
+    if (laws[atom->type[i]].bulk > 0.0) atom->dvector[energy][i] += heat[i][0] / volume(i);
+}
+
+void McaElementEos::tally_energy(double *total, double *per_atom) const
+{
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (laws[atom->type[i]].bulk == 0.0) continue;
+    const double e = atom->dvector[energy][i] * volume(i);
+    if (total) *total += e;
+    if (per_atom) per_atom[i] += e;
+  }
+}
+
+double McaElementEos::volume_ratio(int i) const
+{
+  return active() && laws[atom->type[i]].bulk > 0.0 ? 1.0 + atom->dvector[dvolume][i] : 0.0;
+}
+
+double McaElementEos::energy_density(int i) const
+{
+  return active() && laws[atom->type[i]].bulk > 0.0 ? atom->dvector[energy][i] : 0.0;
+}
+
+double McaElementEos::pressure(int i) const
+{
+  if (!active() || laws[atom->type[i]].bulk == 0.0) return 0.0;
+  return laws[atom->type[i]].pressure(volume_ratio(i), energy_density(i));
+}
+
+double McaElementEos::viscosity(int i) const
+{
+  return active() && laws[atom->type[i]].bulk > 0.0 ? atom->dvector[visc][i] : 0.0;
+}

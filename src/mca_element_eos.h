@@ -1,0 +1,152 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   Cluster-dynamics plugin for LAMMPS: the pressure of the elements of
+   pair_style mca whose material has a shock equation of state
+   (mca_shock_eos.h), per element i:
+     K_i = sum_j w_ij x_ij x_ij^T,  w_ij = (1 - D_ij) S_ij / r_ref,ij
+     L_i = sum_j w_ij (v_j - v_i) x_ij^T K_i^-1   (its velocity gradient)
+   over its linked pairs (x_ij = x_j - x_i), summed onto owners; a dynamics
+   step advances its volume ratio J_i by exp(dt (tr L_i + tr L_i') / 2)
+   (L_i' with the last step's separations and this step's velocities) and
+   its internal energy u_i (per reference volume) by the work of the
+   pressure and bulk viscosity, (P'_i : M'_i + P_i : M_i) dt / 2, the power
+   that velocity Verlet's forces of the two steps spend; it sends P_i = (p_i + q_i) Omega_i J_i K_i^-1 to its ghosts,
+   with the symmetric part of L_i, and a linked pair pushes its elements
+   apart with
+     f_j = -f_i = (P_i + P_j) x_ij w_ij
+   whose power is -(p_i + q_i) dV_i/dt summed: the work of the pressure is
+   the change of the internal energy, and the force of a homogeneous
+   pressure is -p I in Love's formula on any packing.  An element whose
+   links span no volume (K_i singular, det K_i < 1e-3 (tr K_i / 3)^3: a
+   fragment of one or two links, a sheet) keeps J_i and u_i and pushes no
+   pair.  J - 1, u and q live in a fix property/atom (migration, restart).
+   Formulas: doc/pair_mca.rst.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_CLUSTERDYN_MCA_ELEMENT_EOS_H
+#define LMP_CLUSTERDYN_MCA_ELEMENT_EOS_H
+
+#include "mca_exchange.h"
+#include "mca_material.h"
+#include "mca_shock_eos.h"
+
+#include "pointers.h"
+
+#include <vector>
+
+namespace LAMMPS_NS {
+class FixPropertyAtom;
+namespace ClusterDyn {
+
+  class McaElementEos : protected Pointers {
+   public:
+    // the columns summed onto owners (K: 6, M = sum w dv d^T: 9, at this step's positions and
+    // at the last step's) and sent to ghosts (P: 6, the symmetric part of L: 6, whether the
+    // element has a volume: 1)
+    enum { SHAPE = 15, SUMS = 30, FORWARD = 13, GRADIENT = 6, HAS_VOLUME = 12 };
+    static constexpr const char *FIX_ID = "PAIR_MCA_EOS";
+
+    McaElementEos(LAMMPS *lmp, McaExchange &exchange);
+    ~McaElementEos() override;
+
+    // the materials (scaled to energy/volume) and the packing fraction; with any shock
+    // material, the per-element state is made (or found) and active() is true
+    void init(const std::vector<McaMaterial> &scaled, double packing_fraction);
+    bool active() const { return !laws.empty(); }
+    void grow(int nmax_atoms);
+    double memory_usage() const;
+
+    // the sums over linked pairs: zero, add each pair (d = x_j - x_i now, before: at the last
+    // step, dv = v_j - v_i, the velocities between), then finish: advance (a dynamics step)
+    // J, u and q over dt, and send the pressures to ghosts
+    void begin(int nall);
+    void add_pair(int i, int j, const double *d, const double *before, const double *dv,
+                  double w, bool jown)
+    {
+      double s[SUMS];
+      shape(d, dv, s);
+      shape(before, dv, s + SHAPE);
+      for (int k = 0; k < SUMS; k++) {
+        sums[i][k] += w * s[k];
+        if (jown) sums[j][k] += w * s[k];
+      }
+    }
+    void finish(bool advance, double dt);
+
+    // the force on i of the pair's pressure, f_i = -(P_i + P_j) d w
+    void pair_force(int i, int j, const double *d, double w, double *f) const
+    {
+      const double *pi = pressures[i], *pj = pressures[j];
+      double p[6];
+      for (int k = 0; k < 6; k++) p[k] = pi[k] + pj[k];
+      f[0] = -w * (p[0] * d[0] + p[3] * d[1] + p[4] * d[2]);
+      f[1] = -w * (p[3] * d[0] + p[1] * d[1] + p[5] * d[2]);
+      f[2] = -w * (p[4] * d[0] + p[5] * d[1] + p[2] * d[2]);
+    }
+
+    // the pair's rate of elongation that its elements' velocity gradients give,
+    // r n.(L_i + L_j)/2.n (one element's where the other has no volume); false: neither has
+    bool affine_rate(int i, int j, const double *n, double r, double &rate) const
+    {
+      const double hi = pressures[i][HAS_VOLUME], hj = pressures[j][HAS_VOLUME];
+      if (hi + hj == 0.0) return false;
+      const double nn[6] = {n[0] * n[0], n[1] * n[1], n[2] * n[2],
+                            2.0 * n[0] * n[1], 2.0 * n[0] * n[2], 2.0 * n[1] * n[2]};
+      double sum = 0.0;
+      for (int k = 0; k < 6; k++)
+        sum += nn[k] * (hi * pressures[i][GRADIENT + k] + hj * pressures[j][GRADIENT + k]);
+      rate = r * sum / (hi + hj);
+      return true;
+    }
+
+    // the plastic work of a pair heats its elements, shared as its elongation (a_i, a_j: the
+    // half stiffnesses); zero, add, then finish (summed onto owners, into u)
+    void begin_heat(int nall);
+    void add_heat(int i, int j, double work, double ai, double aj, bool jown)
+    {
+      heat[i][0] += work * aj / (ai + aj);
+      if (jown) heat[j][0] += work * ai / (ai + aj);
+    }
+    void finish_heat();
+
+    // the elements' internal energies u Omega added to the total and per atom (null: not
+    // wanted)
+    void tally_energy(double *total, double *per_atom) const;
+
+    // of an owned element: its volume ratio J, internal energy per reference volume u,
+    // pressure p and bulk viscosity q (energy/volume); 0 where its material has no shock law
+    double volume_ratio(int i) const;
+    double energy_density(int i) const;
+    double pressure(int i) const;
+    double viscosity(int i) const;
+
+   private:
+    static void shape(const double *d, const double *dv, double *s)
+    {
+      s[0] = d[0] * d[0];
+      s[1] = d[1] * d[1];
+      s[2] = d[2] * d[2];
+      s[3] = d[0] * d[1];
+      s[4] = d[0] * d[2];
+      s[5] = d[1] * d[2];
+      for (int a = 0; a < 3; a++)
+        for (int b = 0; b < 3; b++) s[6 + 3 * a + b] = dv[a] * d[b];
+    }
+    McaExchange &exchange;
+    double **sums, **pressures, **heat;
+    int nmax;
+    double fraction;
+    const std::vector<McaMaterial> *scaled;
+    std::vector<McaShockEos> laws;    // per type; bulk 0: no shock law
+    FixPropertyAtom *store;
+    int dvolume, energy, visc;        // the store's columns: J - 1, u, q
+
+    double volume(int i) const;
+    bool advance_element(int i, double dt);
+    void check_densities() const;
+    [[noreturn]] void beyond_limit(int i, double ratio) const;
+  };
+
+}    // namespace ClusterDyn
+}    // namespace LAMMPS_NS
+
+#endif
