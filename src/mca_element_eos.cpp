@@ -154,20 +154,21 @@ namespace {
   }
 }    // namespace
 
-// element i over dt (0: no step, the pressure of its state): its volume ratio and energy, its
-// pressure tensor P = (p + q) Omega J K^-1 and velocity gradient; false: it has no shock law
-// or no volume
+// element i over a step of dt (0: no step, the pressure of its state): its volume ratio and
+// energy, its pressure tensor P = (p + q) Omega J K^-1 and displacement gradient; false: it has
+// no shock law or no volume
 bool McaElementEos::advance_element(int i, double dt)
 {
   const int type = atom->type[i];
   if (laws[type].bulk == 0.0) return false;
+  const double *s = sums[i];
   double inv[6];
-  if (!invert(sums[i], inv)) {
+  if (!invert(s, inv)) {
     atom->dvector[visc][i] = 0.0;
     return false;
   }
   double grad[3][3];
-  gradient(sums[i], inv, grad);
+  gradient(s, inv, grad);
   const double trace = grad[0][0] + grad[1][1] + grad[2][2];
   double *out = pressures[i];
   const double sym[6] = {grad[0][0], grad[1][1], grad[2][2], 0.5 * (grad[0][1] + grad[1][0]),
@@ -179,23 +180,32 @@ bool McaElementEos::advance_element(int i, double dt)
   double &q = atom->dvector[visc][i];
   double j1 = 1.0 + dvol;
   if (dt > 0.0) {
-    // the rate at the last step's separations (as this one's where they spanned no volume)
+    // the gradient at the last step's separations (as this one's where they spanned no
+    // volume): K' = K - M - M^T + N, M' = M - N
+    const double *n = s + MOVES, *mm = s + 6;
+    const double last[15] = {s[0] - 2.0 * mm[0] + n[0], s[1] - 2.0 * mm[4] + n[1],
+                             s[2] - 2.0 * mm[8] + n[2], s[3] - mm[1] - mm[3] + n[3],
+                             s[4] - mm[2] - mm[6] + n[4], s[5] - mm[5] - mm[7] + n[5],
+                             mm[0] - n[0], mm[1] - n[3], mm[2] - n[4],
+                             mm[3] - n[3], mm[4] - n[1], mm[5] - n[5],
+                             mm[6] - n[4], mm[7] - n[5], mm[8] - n[2]};
     double before = trace, inv0[6], grad0[3][3];
-    if (invert(sums[i] + SHAPE, inv0)) {
-      gradient(sums[i] + SHAPE, inv0, grad0);
+    if (invert(last, inv0)) {
+      gradient(last, inv0, grad0);
       before = grad0[0][0] + grad0[1][1] + grad0[2][2];
     }
     const McaMaterial &m = (*scaled)[type];
-    const double j0 = j1, rate = 0.5 * (before + trace);
-    j1 = j0 * exp(rate * dt);
+    const double j0 = j1, strain = 0.5 * (before + trace);
+    j1 = j0 * exp(strain);
     if (!(j1 > law.limit())) beyond_limit(i, j1);
-    const double w0 = 0.5 * dt * (law.pressure(j0, u) + q) * j0 * before;
-    q = force->mvv2e * law.viscosity(-rate, m.rho0 / j1, m.c0, 2.0 * atom->radius[i]);
-    u = law.energy_after(u, w0, j1, q, 0.5 * dt * j1 * trace);
+    const double w0 = 0.5 * (law.pressure(j0, u) + q) * j0 * before;
+    q = force->mvv2e * law.viscosity(-strain / dt, m.rho0 / j1, m.c0, 2.0 * atom->radius[i]);
+    u = law.energy_after(u, w0, j1, q, 0.5 * j1 * trace);
     dvol = j1 - 1.0;
   }
-  const double scale = (law.pressure(j1, u) + q) * volume(i) * j1;
+  const double pressure = law.pressure(j1, u) + q, scale = pressure * volume(i) * j1;
   for (int k = 0; k < 6; k++) out[k] = scale * inv[k];
+  out[MEAN] = q - pressure;    // -p
   return true;
 }
 

@@ -3,19 +3,24 @@
    pair_style mca whose material has a shock equation of state
    (mca_shock_eos.h), per element i:
      K_i = sum_j w_ij x_ij x_ij^T,  w_ij = (1 - D_ij) S_ij / r_ref,ij
-     L_i = sum_j w_ij (v_j - v_i) x_ij^T K_i^-1   (its velocity gradient)
-   over its linked pairs (x_ij = x_j - x_i), summed onto owners; a dynamics
-   step advances its volume ratio J_i by exp(dt (tr L_i + tr L_i') / 2)
-   (L_i' with the last step's separations and this step's velocities) and
-   its internal energy u_i (per reference volume) by the work of the
-   pressure and bulk viscosity, (P'_i : M'_i + P_i : M_i) dt / 2, the power
-   that velocity Verlet's forces of the two steps spend; it sends P_i = (p_i + q_i) Omega_i J_i K_i^-1 to its ghosts,
-   with the symmetric part of L_i, and a linked pair pushes its elements
+     H_i = sum_j w_ij dx_ij x_ij^T K_i^-1   (its displacement gradient over
+                                             the step, L_i dt)
+   over its linked pairs (x_ij = x_j - x_i, dx_ij its change since the last
+   step: positions, whatever moved them), summed onto owners; a dynamics
+   step advances its volume ratio J_i by exp((tr H_i + tr H_i') / 2) (H_i'
+   with the last step's separations) and its internal energy u_i (per
+   reference volume) by the work of the pressure and bulk viscosity,
+   (P'_i : M'_i + P_i : M_i) / 2 (M = sum w dx x^T), what velocity Verlet's
+   forces of the two steps spend; it sends P_i = (p_i + q_i) Omega_i J_i K_i^-1 to its ghosts,
+   with the symmetric part of H_i and -p_i, and a linked pair pushes its elements
    apart with
      f_j = -f_i = (P_i + P_j) x_ij w_ij
    whose power is -(p_i + q_i) dV_i/dt summed: the work of the pressure is
    the change of the internal energy, and the force of a homogeneous
-   pressure is -p I in Love's formula on any packing.  An element whose
+   pressure is -p I in Love's formula on any packing.  A pair's response
+   (damage, breaking) reads its elements' mean stress -p (the viscosity q
+   is numerical), not its share of their force, which grows where an
+   element has fewer links.  An element whose
    links span no volume (K_i singular, det K_i < 1e-3 (tr K_i / 3)^3: a
    fragment of one or two links, a sheet) keeps J_i and u_i and pushes no
    pair.  J - 1, u and q live in a fix property/atom (migration, restart).
@@ -39,10 +44,10 @@ namespace ClusterDyn {
 
   class McaElementEos : protected Pointers {
    public:
-    // the columns summed onto owners (K: 6, M = sum w dv d^T: 9, at this step's positions and
-    // at the last step's) and sent to ghosts (P: 6, the symmetric part of L: 6, whether the
-    // element has a volume: 1)
-    enum { SHAPE = 15, SUMS = 30, FORWARD = 13, GRADIENT = 6, HAS_VOLUME = 12 };
+    // the columns summed onto owners (K: 6, M = sum w dx x^T: 9, N = sum w dx dx^T: 6; the
+    // last step's K' = K - M - M^T + N and M' = M - N) and sent to ghosts (P: 6, the symmetric
+    // part of H: 6, whether the element has a volume: 1, its mean stress -p: 1)
+    enum { MOVES = 15, SUMS = 21, FORWARD = 14, GRADIENT = 6, HAS_VOLUME = 12, MEAN = 13 };
     static constexpr const char *FIX_ID = "PAIR_MCA_EOS";
 
     McaElementEos(LAMMPS *lmp, McaExchange &exchange);
@@ -56,21 +61,31 @@ namespace ClusterDyn {
     double memory_usage() const;
 
     // the sums over linked pairs: zero, add each pair (d = x_j - x_i now, before: at the last
-    // step, dv = v_j - v_i, the velocities between), then finish: advance (a dynamics step)
-    // J, u and q over dt, and send the pressures to ghosts
+    // step), then finish: advance (a dynamics step of dt) J, u and q, and send the pressures
+    // to ghosts
     void begin(int nall);
-    void add_pair(int i, int j, const double *d, const double *before, const double *dv,
-                  double w, bool jown)
+    void add_pair(int i, int j, const double *d, const double *before, double w, bool jown)
     {
-      double s[SUMS];
-      shape(d, dv, s);
-      shape(before, dv, s + SHAPE);
+      const double dv[3] = {d[0] - before[0], d[1] - before[1], d[2] - before[2]};
+      const double s[SUMS] = {d[0] * d[0],   d[1] * d[1],   d[2] * d[2],   d[0] * d[1],
+                              d[0] * d[2],   d[1] * d[2],   dv[0] * d[0],  dv[0] * d[1],
+                              dv[0] * d[2],  dv[1] * d[0],  dv[1] * d[1],  dv[1] * d[2],
+                              dv[2] * d[0],  dv[2] * d[1],  dv[2] * d[2],  dv[0] * dv[0],
+                              dv[1] * dv[1], dv[2] * dv[2], dv[0] * dv[1], dv[0] * dv[2],
+                              dv[1] * dv[2]};
       for (int k = 0; k < SUMS; k++) {
         sums[i][k] += w * s[k];
         if (jown) sums[j][k] += w * s[k];
       }
     }
     void finish(bool advance, double dt);
+
+    // the mean stress of the pair's elements that have a volume (0: neither has)
+    double pair_stress(int i, int j) const
+    {
+      const double hi = pressures[i][HAS_VOLUME], hj = pressures[j][HAS_VOLUME];
+      return hi + hj > 0.0 ? (pressures[i][MEAN] + pressures[j][MEAN]) / (hi + hj) : 0.0;
+    }
 
     // the force on i of the pair's pressure, f_i = -(P_i + P_j) d w
     void pair_force(int i, int j, const double *d, double w, double *f) const
@@ -83,9 +98,9 @@ namespace ClusterDyn {
       f[2] = -w * (p[4] * d[0] + p[5] * d[1] + p[2] * d[2]);
     }
 
-    // the pair's rate of elongation that its elements' velocity gradients give,
-    // r n.(L_i + L_j)/2.n (one element's where the other has no volume); false: neither has
-    bool affine_rate(int i, int j, const double *n, double r, double &rate) const
+    // the pair's elongation over the step that its elements' displacement gradients give,
+    // r n.(H_i + H_j)/2.n (one element's where the other has no volume); false: neither has
+    bool affine_elongation(int i, int j, const double *n, double r, double &rate) const
     {
       const double hi = pressures[i][HAS_VOLUME], hj = pressures[j][HAS_VOLUME];
       if (hi + hj == 0.0) return false;
@@ -120,17 +135,6 @@ namespace ClusterDyn {
     double viscosity(int i) const;
 
    private:
-    static void shape(const double *d, const double *dv, double *s)
-    {
-      s[0] = d[0] * d[0];
-      s[1] = d[1] * d[1];
-      s[2] = d[2] * d[2];
-      s[3] = d[0] * d[1];
-      s[4] = d[0] * d[2];
-      s[5] = d[1] * d[2];
-      for (int a = 0; a < 3; a++)
-        for (int b = 0; b < 3; b++) s[6 + 3 * a + b] = dv[a] * d[b];
-    }
     McaExchange &exchange;
     double **sums, **pressures, **heat;
     int nmax;

@@ -9,9 +9,10 @@
    two elements and stores the plastic elongation; the relative rotation
    of the elements gives a moment (McaContact::moment); the pair's energy
    is S (a e^2 / 2 + |tau~|^2 / (2a)) + the moment's; from this step's
-   stresses (mca_response.h), with the normal stress of the elements'
+   stresses (mca_response.h), with the mean stress of the elements'
    pressure (a shock equation of state, mca_element_eos.h), the pair
-   damages (from the next step) or breaks (now).  Formulas: doc/pair_mca.rst.
+   damages (from the next step) or breaks (now); with that pressure it
+   also breaks when stretched to RUPTURE r_ref.  Formulas: doc/pair_mca.rst.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_CLUSTERDYN_MCA_LINKED_PAIR_H
@@ -21,6 +22,7 @@
 #include "mca_pair_tally.h"
 #include "mca_pair_walk.h"
 #include "mca_response.h"
+#include "mca_settings.h"
 
 namespace LAMMPS_NS {
 namespace ClusterDyn {
@@ -28,6 +30,10 @@ namespace ClusterDyn {
   struct McaLinkedPair {
     using C = McaContact;
     enum Outcome { HOLDS = 0, DAMAGES = 1, BREAKS = 2 };
+    // with a shock equation of state, a link of a material with a strength breaks at the
+    // stretch r / r_ref of the neighbour list's reach: an element that lost its volume pulls
+    // with its deviator alone, which yield caps below the strength
+    static constexpr double RUPTURE = McaSettings::REACH;
 
     const McaResponse &response;
     double *v;         // the pair's state
@@ -101,14 +107,13 @@ namespace ClusterDyn {
 
     // this step after the trial stress sigma: the plastic return by phi about mean (phi < 1),
     // the rotation (turn: null where the elements do not turn), damage or breaking (under
-    // sigma and the normal stress of pressure, the effective force on i of the elements'
-    // pressure, null: none), the force; false: the pair breaks and transmits nothing from now
-    // on.  Inlined into the
+    // sigma and the elements' mean stress from their pressure: pressure, null where there
+    // is none), the force; false: the pair breaks and transmits nothing from now on.  Inlined into the
     // force pass: as a call it costs 10 % of pair mca's Pair time (bench/bench_pair_ab.sh)
     [[gnu::always_inline]] bool step(double sigma, double phi, double mean, const McaPairFrame &p,
                                      const C::Turn *turn, const double *omega_i,
                                      const double *omega_j, double dt, const McaPairTally &tally,
-                                     bool energy_wanted, const double *pressure,
+                                     bool energy_wanted, const McaPressureLoad *pressure,
                                      McaPairForce &out)
     {
       if (phi < 1.0) {
@@ -120,8 +125,11 @@ namespace ClusterDyn {
       double moment[3], lost = 0.0;
       const double elong = elongation(p.r), tau2 = C::dot(v + C::TAU, v + C::TAU);
       const double epair = energy(p.n, elong, tau2, moment);
-      const double pushed = pressure ? C::dot(pressure, p.n) / area : 0.0;
-      const Outcome outcome = respond(sigma + pushed, tau2, lost);
+      Outcome outcome = respond(sigma + (pressure ? pressure->stress : 0.0), tau2, lost);
+      if (pressure && outcome != BREAKS && response.active() && p.r > RUPTURE * v[C::REF]) {
+        lost = intact;    // a ligament that flowed to the reach of the list
+        outcome = BREAKS;
+      }
       if (outcome != HOLDS)
         tally.volume_change(outcome == BREAKS ? McaManybody::CHANGE_STATE
                                               : McaManybody::CHANGE_DAMAGE, -lost * area * elong);
@@ -135,7 +143,7 @@ namespace ClusterDyn {
       for (int k = 0; k < 3; k++) {
         out.ft[k] = intact * area * tau[k];
         out.fi[k] = intact * area * sigma * p.n[k] + out.ft[k];
-        if (pressure) out.fi[k] += intact * pressure[k];
+        if (pressure) out.fi[k] += intact * pressure->f[k];
         out.mom[k] = intact * moment[k];
       }
       if (energy_wanted) out.evdwl = intact * epair;

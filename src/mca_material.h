@@ -48,7 +48,7 @@ namespace ClusterDyn {
     double gruneisen = 0.0;  // shock: Gamma0
     double b1 = 0.06;        // shock: linear bulk viscosity coefficient
     double b2 = 1.2;         // shock: quadratic bulk viscosity coefficient
-    double hourglass = 1.0;  // shock: the hourglass spring, in units of 2 (K + 4G/3) / R
+    double hourglass = 1.0;  // shock: the hourglass spring, in units of 2 (K + 4G/3 + 2|p|) / R
 
     enum { NRESTART = 16 };
 

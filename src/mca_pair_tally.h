@@ -2,7 +2,8 @@
    Cluster-dynamics plugin for LAMMPS: what the law of one pair of
    pair_style mca gives its force pass: the force on element i (all of it,
    and the tangential part that makes the torques), a link's moment and the
-   pair's energy (McaPairForce); and where it tallies what it changes
+   pair's energy (McaPairForce), given the load of its elements' pressure
+   (McaPressureLoad); and where it tallies what it changes
    (McaPairTally): the state counts and energies of the pair state (a pair
    with a ghost counts w = 1/2 with newton off, as both processors see it),
    the dissipated works, the changes of volume that the many-body term
@@ -25,6 +26,12 @@ namespace ClusterDyn {
 
   struct McaPairForce {
     double fi[3], ft[3], mom[3] = {0.0, 0.0, 0.0}, evdwl = 0.0;
+  };
+
+  // what the elements' pressure does to a linked pair (mca_element_eos.h): its effective force
+  // on i, and the mean stress -p of its elements that its response reads as normal stress
+  struct McaPressureLoad {
+    double f[3], stress;
   };
 
   struct McaPairTally {

