@@ -6,6 +6,7 @@
 #include "mca_element_eos.h"
 
 #include "mca_element.h"
+#include "mca_element_shape.h"
 
 #include "atom.h"
 #include "error.h"
@@ -22,7 +23,7 @@ using namespace ClusterDyn;
 
 McaElementEos::McaElementEos(LAMMPS *lmp, McaExchange &exchange) :
     Pointers(lmp), exchange(exchange), sums(nullptr), pressures(nullptr), heat(nullptr), nmax(0), fraction(1.0),
-    scaled(nullptr), store(nullptr), dvolume(-1), energy(-1), visc(-1)
+    scaled(nullptr), store(nullptr), made(false), dvolume(-1), energy(-1), visc(-1)
 {
 }
 
@@ -33,7 +34,7 @@ McaElementEos::~McaElementEos()
   memory->destroy(heat);
   // the elements' state goes with the style (a new pair_style starts afresh), as pair
   // granular's history
-  if (store && modify->nfix) modify->delete_fix(FIX_ID);
+  if (made && modify->nfix && modify->get_fix_by_id(FIX_ID)) modify->delete_fix(FIX_ID);
 }
 
 void McaElementEos::init(const std::vector<McaMaterial> &materials, double packing_fraction)
@@ -48,9 +49,17 @@ void McaElementEos::init(const std::vector<McaMaterial> &materials, double packi
     laws.push_back(m.shock() ? McaShockEos{m.bulk, m.slope, m.gruneisen, m.b1, m.b2}
                              : McaShockEos{});
   store = dynamic_cast<FixPropertyAtom *>(modify->get_fix_by_id(FIX_ID));
+  if (!store && made)
+    error->all(FLERR, "Pair mca: fix {} (the elements' volume, internal energy and viscosity of "
+               "their shock equation of state) was removed: re-issue pair_style mca to start "
+               "afresh", FIX_ID);
   if (!store)
     store = dynamic_cast<FixPropertyAtom *>(modify->add_fix(
         fmt::format("{} all property/atom d_mca_dvolume d_mca_energy d_mca_viscosity", FIX_ID)));
+  made = true;
+  // not in data files: read_data would meet the section before the style makes the fix
+  // (a data file starts the elements at J = 1, u = 0; restart files keep them)
+  if (store) store->wd_section = 0;
   int flag, cols;
   dvolume = atom->find_custom("mca_dvolume", flag, cols);
   energy = atom->find_custom("mca_energy", flag, cols);
@@ -125,35 +134,6 @@ void McaElementEos::finish(bool advance, double dt)
   exchange.to_ghosts(pressures, FORWARD);
 }
 
-namespace {
-  // the inverse of the symmetric K (xx yy zz xy xz yz); false: it spans no volume
-  bool invert(const double *s, double *inv)
-  {
-    const double tr = s[0] + s[1] + s[2];
-    const double det = s[0] * (s[1] * s[2] - s[5] * s[5]) - s[3] * (s[3] * s[2] - s[5] * s[4]) +
-        s[4] * (s[3] * s[5] - s[1] * s[4]);
-    if (!(tr > 0.0) || det < 1.0e-3 * tr * tr * tr / 27.0) return false;
-    inv[0] = (s[1] * s[2] - s[5] * s[5]) / det;
-    inv[1] = (s[0] * s[2] - s[4] * s[4]) / det;
-    inv[2] = (s[0] * s[1] - s[3] * s[3]) / det;
-    inv[3] = (s[4] * s[5] - s[3] * s[2]) / det;
-    inv[4] = (s[3] * s[5] - s[4] * s[1]) / det;
-    inv[5] = (s[3] * s[4] - s[0] * s[5]) / det;
-    return true;
-  }
-
-  // L = M K^-1 (M row-major after K's 6 sums)
-  void gradient(const double *s, const double *inv, double grad[3][3])
-  {
-    const double kinv[3][3] = {{inv[0], inv[3], inv[4]}, {inv[3], inv[1], inv[5]},
-                               {inv[4], inv[5], inv[2]}};
-    for (int a = 0; a < 3; a++)
-      for (int b = 0; b < 3; b++)
-        grad[a][b] = s[6 + 3 * a] * kinv[0][b] + s[7 + 3 * a] * kinv[1][b] +
-            s[8 + 3 * a] * kinv[2][b];
-  }
-}    // namespace
-
 // element i over a step of dt (0: no step, the pressure of its state): its volume ratio and
 // energy, its pressure tensor P = (p + q) Omega J K^-1 and displacement gradient; false: it has
 // no shock law or no volume
@@ -163,12 +143,12 @@ bool McaElementEos::advance_element(int i, double dt)
   if (laws[type].bulk == 0.0) return false;
   const double *s = sums[i];
   double inv[6];
-  if (!invert(s, inv)) {
+  if (!McaElementShape::invert(s, inv)) {
     atom->dvector[visc][i] = 0.0;
     return false;
   }
   double grad[3][3];
-  gradient(s, inv, grad);
+  McaElementShape::gradient(s, inv, grad);
   const double trace = grad[0][0] + grad[1][1] + grad[2][2];
   double *out = pressures[i];
   const double sym[6] = {grad[0][0], grad[1][1], grad[2][2], 0.5 * (grad[0][1] + grad[1][0]),
@@ -190,8 +170,8 @@ bool McaElementEos::advance_element(int i, double dt)
                              mm[3] - n[3], mm[4] - n[1], mm[5] - n[5],
                              mm[6] - n[4], mm[7] - n[5], mm[8] - n[2]};
     double before = trace, inv0[6], grad0[3][3];
-    if (invert(last, inv0)) {
-      gradient(last, inv0, grad0);
+    if (McaElementShape::invert(last, inv0)) {
+      McaElementShape::gradient(last, inv0, grad0);
       before = grad0[0][0] + grad0[1][1] + grad0[2][2];
     }
     const McaMaterial &m = (*scaled)[type];

@@ -21,9 +21,9 @@
    (damage, breaking) reads its elements' mean stress -p (the viscosity q
    is numerical), not its share of their force, which grows where an
    element has fewer links.  An element whose
-   links span no volume (K_i singular, det K_i < 1e-3 (tr K_i / 3)^3: a
-   fragment of one or two links, a sheet) keeps J_i and u_i and pushes no
-   pair.  J - 1, u and q live in a fix property/atom (migration, restart).
+   links span no volume (the smallest eigenvalue of K_i below 0.1 tr K_i / 3:
+   a fragment of a few links, a sheet, a chain, whose K_i^-1 would multiply
+   the pressure's force) keeps J_i and u_i and pushes no pair.  J - 1, u and q live in a fix property/atom (migration, restart).
    Formulas: doc/pair_mca.rst.
 ------------------------------------------------------------------------- */
 
@@ -57,6 +57,8 @@ namespace ClusterDyn {
     // material, the per-element state is made (or found) and active() is true
     void init(const std::vector<McaMaterial> &scaled, double packing_fraction);
     bool active() const { return !laws.empty(); }
+    // whether elements of this type have a shock law
+    bool has_law(int type) const { return !laws.empty() && laws[type].bulk > 0.0; }
     void grow(int nmax_atoms);
     double memory_usage() const;
 
@@ -142,6 +144,7 @@ namespace ClusterDyn {
     const std::vector<McaMaterial> *scaled;
     std::vector<McaShockEos> laws;    // per type; bulk 0: no shock law
     FixPropertyAtom *store;
+    bool made;                        // this style made the store
     int dvolume, energy, visc;        // the store's columns: J - 1, u, q
 
     double volume(int i) const;

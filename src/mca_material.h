@@ -161,11 +161,11 @@ namespace ClusterDyn {
             lmp->error->all(FLERR, "{}: shock Gamma0 of {} is not a Grueneisen parameter (0 to "
                             "10)", who, arg[i + 4]);
         } else if (key == "bulk_viscosity") {
-          m.b1 = nonnegative(who, "bulk_viscosity b1 (linear)", arg[i + 1], lmp);
-          m.b2 = nonnegative(who, "bulk_viscosity b2 (quadratic)", arg[i + 2], lmp);
+          m.b1 = bounded(who, "bulk_viscosity b1 (linear)", arg[i + 1], 2.0, lmp);
+          m.b2 = bounded(who, "bulk_viscosity b2 (quadratic)", arg[i + 2], 4.0, lmp);
           viscosity_given = true;
         } else if (key == "hourglass") {
-          m.hourglass = nonnegative(who, "hourglass (coefficient)", val, lmp);
+          m.hourglass = bounded(who, "hourglass (coefficient)", val, 5.0, lmp);
           hourglass_given = true;
         } else if (key == "poisson") {
           nu = number_arg(who, "Poisson's ratio nu", val, lmp);
@@ -219,6 +219,16 @@ namespace ClusterDyn {
                             "hardening", "friction", "viscous", "weld", "hourglass"})
         if (key == k) return 1;
       return 0;
+    }
+    // a coefficient of a numerical term: 0 to most (beyond it the explicit step is unstable)
+    static double bounded(const std::string &who, const char *name, const char *val, double most,
+                          LAMMPS *lmp)
+    {
+      const double v = nonnegative(who, name, val, lmp);
+      if (v > most)
+        lmp->error->all(FLERR, "{}: {} must lie in 0 to {:g} (got {}): the explicit time step "
+                        "does not follow a larger one", who, name, most, val);
+      return v;
     }
     static double nonnegative(const std::string &who, const char *name, const char *val,
                               LAMMPS *lmp)

@@ -227,13 +227,16 @@ void PairMCA::pair_forces(const StatePass &pass, StateTally &changes)
     if (linked) {
       McaLinkedPair link(model.response, v, a);
       const double sigma = plastic ? v[C::SIG] : trial_stresses(i, j, v, p, turning);
+      // with a shock law on either side the pair takes its elements' pressure; on both, it
+      // returns its deviator about zero and has the hourglass spring
+      const bool si = eos.has_law(atom->type[i]), sj = eos.has_law(atom->type[j]);
       const double phi = plastic ? plasticity.phi(i, j) : 1.0;
-      const double mean = phi < 1.0 && !eos.active() ? plasticity.mean(i, j) : 0.0;
+      const double mean = phi < 1.0 && !(si && sj) ? plasticity.mean(i, j) : 0.0;
       McaPressureLoad load;
       double ehg = 0.0;
-      if (eos.active()) ehg = pressure_forces(i, j, v, p, load);
+      if (si || sj) ehg = pressure_forces(i, j, v, p, si && sj, load);
       if (!link.step(sigma, phi, mean, p, turning, omega[i], omega[j], dt, tally, eflag_either,
-                     eos.active() ? &load : nullptr, out)) {
+                     si || sj ? &load : nullptr, out)) {
         word = state_word(word, 0, pass.trial);    // from now on an unlinked pair, apart
         return;
       }
@@ -278,20 +281,21 @@ double PairMCA::trial_stresses(int i, int j, double *v, const McaPairFrame &p, c
 }
 
 // a linked pair's load from its elements' pressure (mca_element_eos.h): their force on i with
-// its hourglass spring's, and their mean stress; the spring: the elongation beyond the
+// its hourglass spring's (spring: both elements have the shock law), and their mean stress;
+// the spring: the elongation beyond the
 // elements' displacement gradients (a dynamics step adds the pair's own in the pass of the
 // volumes and takes the affine part off here) pulls with the stiffness of
 // 2 H (K + 4G/3 + 2 |p|) / R per half, p the elements' pressure (the softening it resists
 // grows with it); returns the spring's effective energy
-double PairMCA::pressure_forces(int i, int j, double *v, const McaPairFrame &p,
+double PairMCA::pressure_forces(int i, int j, double *v, const McaPairFrame &p, bool spring,
                                 McaPressureLoad &load)
 {
   double *force = load.f;
   eos.pair_force(i, j, p.d, v[C::AREA] / v[C::REF], force);
   load.stress = eos.pair_stress(i, j);
   double affine;
-  if (!eos.affine_elongation(i, j, p.n, p.r, affine)) {
-    v[C::HG] = 0.0;    // neither element has a volume: nothing to stabilise
+  if (!spring || !eos.affine_elongation(i, j, p.n, p.r, affine)) {
+    v[C::HG] = 0.0;    // a linear-law element, or neither has a volume: no spring
     return 0.0;
   }
   if (elements_turn()) v[C::HG] -= affine;

@@ -90,7 +90,7 @@ namespace ClusterDyn {
     double trial_stresses(int i, int j, double *v, const McaPairFrame &p,
                           const McaContact::Turn *turn);
     bool elements_turn() const;
-    double pressure_forces(int i, int j, double *v, const McaPairFrame &p,
+    double pressure_forces(int i, int j, double *v, const McaPairFrame &p, bool spring,
                            McaPressureLoad &load);
   };
 

@@ -51,6 +51,7 @@ METHODS = {"mca": "movable cellular automata, shock EOS (pair mca)",
 UPS = [200, 500, 1000, 2000]
 SWEEP = {"al": range(150, 240, 10), "cu": range(60, 130, 10)}    # the elements' spall threshold
 SEEDS = [0, 1, 2]
+B1 = [0.06, 0.15, 0.3, 0.6]     # the bulk viscosity's linear coefficient against the pull-back
 RUNS = os.path.join(HERE, "runs")
 
 
@@ -120,13 +121,15 @@ def spall_plane(xt, rho):
     return float(x[filled.max()] - np.mean(x[inside]))
 
 
-def impact(method, metal, v, workdir, seed=0):
+def impact(method, metal, v, workdir, seed=0, extra=None):
     """Run one plate impact in workdir: its size, cost and whether it spalled (its records stay
     there for read_impact())."""
     script, var = inputs(method, metal, v)
     var = dict(var, out="run")
     if seed:
         var["seed"] = seed
+    if extra:
+        var["extra"] = extra
     try:
         out = lmp_command(script, var, workdir, args=["-log", "log.lammps"])
     except subprocess.CalledProcessError as failed:
@@ -263,6 +266,16 @@ def main():
                       "acoustic threshold 2 sigma_sp / (rho c_L) (m/s)",
                       "pull-back 1/2 rho0 c_L dU (GPa)", "1/2 rho0 c0 dU (GPa)",
                       "strength given (GPa)"], rows)]
+    viscous = {(metal, b1): read_impact(metal, 400, os.path.join(RUNS, f"b1-{metal}-{b1}"), keep(
+        os.path.join(RUNS, f"b1-{metal}-{b1}"),
+        lambda w, a=metal, b=b1: impact("mca", a, 400, w, extra=f"bulk_viscosity {b} 1.2")))
+        for metal in METALS for b1 in B1}
+    report += ["", "The bulk viscosity's linear coefficient b1 (b2 = 1.2) against the pull-back "
+               "1/2 rho0 c0 dU at 400 m/s (the default b1 = 0.06):", "",
+               table(["metal"] + [f"b1 = {b1}" for b1 in B1],
+                     [[m["name"]] + [fmt(None if viscous[(metal, b1)]["strength"] is None
+                                         else viscous[(metal, b1)]["strength"] / 1e9, ".2f")
+                                     for b1 in B1] for metal, m in METALS.items()])]
     report += ["", "## Plate impacts", ""]
     rows = []
     for metal, m in METALS.items():

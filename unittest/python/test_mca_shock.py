@@ -183,7 +183,7 @@ def impact_script(units="si", v=500.0, extra="", dt_share=1.0, elastic=False):
 @pytest.mark.parametrize("units,elastic", [("si", True), ("si", False), ("metal", False)])
 def test_an_impact_without_fracture_keeps_its_energy(tmp_path, units, elastic):
     # elastic: 0.5 % at the default step (0.1 d / c_L; the hourglass spring's work); yielding,
-    # the radial return drifts by O(dt): 1.9 % at 0.1 d / c_L, 0.9 % at 0.05, so a quarter of
+    # the radial return drifts by O(dt): 2.0 % at 0.1 d / c_L, 1.1 % at 0.05, so a quarter of
     # it (doc/pair_mca.rst)
     share = 1.0 if elastic else 0.25
     out = run_lmp(tmp_path, impact_script(units, dt_share=share, elastic=elastic)
@@ -321,3 +321,95 @@ def test_example_tlsph_reference_runs_and_spalls(tmp_path):
     assert cracked > 0
     t, u = np.loadtxt(tmp_path / "tlsph.visar", usecols=(1, 2), unpack=True)
     assert u.max() == pytest.approx(400.0, rel=0.08)
+
+
+def two_types(first, second, fraction=0.0):
+    """The plate of plate_setup("si", 6) with two element types (the second a share of the
+    first's elements), struck at 500 m/s from its first 3 cells."""
+    setup = [c.replace("create_box 1 box", "create_box 2 box") for c in plate_setup("si", 6)
+             if not c.startswith("pair_coeff")]
+    at = setup.index(next(c for c in setup if c.startswith("set group all density")))
+    types = [f"pair_coeff 1 1 {first}", f"pair_coeff 2 2 {second}"]
+    if fraction > 0.0:
+        types.append(f"set type 1 type/fraction 2 {fraction} 4711")
+    return setup[:at] + types + setup[at:] + [
+        "region fly block INF 2.9 INF INF INF INF", "group flyer region fly",
+        "velocity flyer set 500 0 0 units box", "fix 1 all nve/sphere"]
+
+
+def test_a_linear_material_is_not_changed_by_a_shock_material_beside_it():
+    """A yielding linear material gives the same stresses whether an unused type has a shock law
+    or a linear one (the return about the mean, the rupture rule and the hourglass spring are
+    decided per pair)."""
+    def stresses(other):
+        with session() as lmp:
+            lmp.commands_list(two_types(f"bulk {K} shear {G} yield {Y}", other) + [
+                "compute s all mca/atom", "compute ps all reduce ave c_s[1] c_s[2] c_s[3]",
+                "thermo_style custom step c_ps[1] c_ps[2] c_ps[3]", "run 300 post no"])
+            return [lmp.extract_compute("ps", 0, 1)[k] for k in range(3)]
+    linear = stresses(f"bulk {K} shear {G}")
+    assert linear[1] < -0.5e9    # lateral compression in uniaxial strain
+    assert stresses(f"shock {RHO0} {C0} {S} {GAMMA0} shear {G}") == pytest.approx(linear,
+                                                                               rel=1e-12)
+
+
+def test_shock_and_linear_elements_linked_keep_their_energy():
+    """Half the elements with the shock law, half with the linear one (K = rho0 c0^2), linked at
+    random, struck at 500 m/s: the energy stays within 5 % over 6000 steps (3.1 % measured; it
+    grew twentyfold while a mixed pair had the hourglass spring; one law per body keeps 0.5 %:
+    doc/pair_mca.rst)."""
+    with session() as lmp:
+        lmp.commands_list(two_types(f"shock {RHO0} {C0} {S} {GAMMA0} shear {G}",
+                                    f"bulk {K} shear {G}", 0.5) + [
+            "compute erot all erotate/sphere", "variable e equal etotal+c_erot",
+            "thermo_style custom step etotal c_erot v_e", "run 0 post no"])
+        e0 = lmp.extract_variable("e")
+        energies = []
+        for _ in range(6):
+            lmp.command("run 1000 post no")
+            energies.append(lmp.extract_variable("e"))
+    assert max(abs(e / e0 - 1.0) for e in energies) < 0.05
+
+
+@pytest.mark.parametrize("words,message", [
+    ("bulk_viscosity 3 1.2", r"b1 \(linear\) must lie in 0 to 2"),
+    ("bulk_viscosity 0.06 5", r"b2 \(quadratic\) must lie in 0 to 4"),
+    ("hourglass 6", r"hourglass \(coefficient\) must lie in 0 to 5"),
+])
+def test_numerical_coefficients_beyond_their_range_are_refused(words, message):
+    setup = [c for c in plate_setup("si", 3) if not c.startswith("pair_coeff")]
+    with session() as lmp:
+        lmp.commands_list(setup[:setup.index(next(c for c in setup
+                                                   if c.startswith("set group all density")))])
+        with pytest.raises(Exception, match=message):
+            lmp.command(f"pair_coeff 1 1 {material('si')[0]} {words}")
+
+
+def test_a_data_file_after_a_run_reads_back_and_restarts_the_elements(tmp_path):
+    """write_data after a run: the pair_coeff words come back, the elements' state (fix
+    PAIR_MCA_EOS) is not in the file (read_data would meet it before the style makes the fix),
+    so the read system starts at J = 1, u = 0 and runs."""
+    import conftest
+    with session() as lmp:
+        lmp.commands_list(plate_setup("si", 4) + [
+            "velocity all set 100 0 0 units box", "region fly block INF 1.9 INF INF INF INF",
+            "group flyer region fly", "velocity flyer set 300 0 0 units box",
+            "fix 1 all nve/sphere", "run 100 post no", f"write_data {tmp_path}/shock.data"])
+    text = (tmp_path / "shock.data").read_text()
+    assert "PAIR_MCA_EOS" not in text and "shock 2703" in text
+    with session() as lmp:
+        lmp.commands_list([
+            "units si", "atom_style sphere", "atom_modify map array", "comm_modify vel yes",
+            "boundary s p p", f"neighbor {0.25 * D} bin", f"pair_style mca fraction {PHI}",
+            f"read_data {tmp_path}/shock.data", f"timestep {0.1 * D / CL}",
+            "fix 1 all nve/sphere", "run 10 post no"])
+        n = lmp.extract_global("nlocal")
+        assert np.all(np.isfinite(lmp.numpy.extract_atom("d_mca_energy")[:n]))
+
+
+def test_removing_the_elements_state_stops_the_next_run():
+    with session() as lmp:
+        lmp.commands_list(plate_setup("si", 3) + ["fix 1 all nve/sphere", "run 5 post no",
+                                                  "unfix PAIR_MCA_EOS"])
+        with pytest.raises(Exception, match=r"fix PAIR_MCA_EOS \(the elements' volume"):
+            lmp.command("run 5 post no")

@@ -1,0 +1,95 @@
+// McaElementShape (mca_element_shape.h, doc/pair_mca.rst "Shock equation of state"): the
+// smallest eigenvalue of a symmetric 3 x 3 against a rotated diagonal one; K^-1 K = I; a full fcc
+// neighbourhood and a free (100) face span a volume, a flat set of links and a chain do not;
+// the gradient of an affine displacement is that displacement's matrix.
+#include "mca_element_shape.h"
+
+#include "gtest/gtest.h"
+
+#include <cmath>
+
+using LAMMPS_NS::ClusterDyn::McaElementShape;
+
+namespace {
+
+// sum of w x x^T over the vectors, w = 1, as xx yy zz xy xz yz
+void shape(const double (*x)[3], int n, double *s)
+{
+  for (int k = 0; k < 6; k++) s[k] = 0.0;
+  for (int j = 0; j < n; j++) {
+    s[0] += x[j][0] * x[j][0];
+    s[1] += x[j][1] * x[j][1];
+    s[2] += x[j][2] * x[j][2];
+    s[3] += x[j][0] * x[j][1];
+    s[4] += x[j][0] * x[j][2];
+    s[5] += x[j][1] * x[j][2];
+  }
+}
+
+const double FCC[12][3] = {{1, 1, 0},  {1, -1, 0},  {-1, 1, 0}, {-1, -1, 0},
+                           {1, 0, 1},  {1, 0, -1},  {-1, 0, 1}, {-1, 0, -1},
+                           {0, 1, 1},  {0, 1, -1},  {0, -1, 1}, {0, -1, -1}};
+
+}    // namespace
+
+TEST(McaElementShape, SmallestEigenvalueOfARotatedDiagonal)
+{
+  // R diag(1, 2, 5) R^T, R a rotation by 0.7 about z then 0.3 about x
+  const double c1 = cos(0.7), s1 = sin(0.7), c2 = cos(0.3), s2 = sin(0.3);
+  const double r[3][3] = {{c1, -s1, 0}, {c2 * s1, c2 * c1, -s2}, {s2 * s1, s2 * c1, c2}};
+  const double d[3] = {1.0, 2.0, 5.0};
+  double m[3][3];
+  for (int a = 0; a < 3; a++)
+    for (int b = 0; b < 3; b++) {
+      m[a][b] = 0.0;
+      for (int k = 0; k < 3; k++) m[a][b] += r[a][k] * d[k] * r[b][k];
+    }
+  const double s[6] = {m[0][0], m[1][1], m[2][2], m[0][1], m[0][2], m[1][2]};
+  EXPECT_NEAR(McaElementShape::smallest_eigenvalue(s), 1.0, 1e-12);
+  const double iso[6] = {3.0, 3.0, 3.0, 0.0, 0.0, 0.0};
+  EXPECT_EQ(McaElementShape::smallest_eigenvalue(iso), 3.0);
+}
+
+TEST(McaElementShape, FullAndFreeFaceNeighbourhoodsSpanAVolume)
+{
+  double s[6], inv[6];
+  shape(FCC, 12, s);
+  ASSERT_TRUE(McaElementShape::invert(s, inv));
+  EXPECT_NEAR(inv[0] * s[0] + inv[3] * s[3] + inv[4] * s[4], 1.0, 1e-14);
+  EXPECT_NEAR(inv[0] * s[3] + inv[3] * s[1] + inv[4] * s[5], 0.0, 1e-14);
+  // a (100) free face: the 4 links in the face and the 4 on one side
+  const double face[8][3] = {{0, 1, 1}, {0, 1, -1}, {0, -1, 1}, {0, -1, -1},
+                             {1, 1, 0}, {1, -1, 0}, {1, 0, 1},  {1, 0, -1}};
+  shape(face, 8, s);
+  EXPECT_NEAR(McaElementShape::smallest_eigenvalue(s) / ((s[0] + s[1] + s[2]) / 3.0), 0.75, 1e-12);
+  EXPECT_TRUE(McaElementShape::invert(s, inv));
+}
+
+TEST(McaElementShape, FlatLinksAndChainsSpanNone)
+{
+  double s[6], inv[6];
+  const double flat[4][3] = {{1, 1, 0}, {1, -1, 0}, {-1, 1, 0}, {-1, -1, 0.05}};
+  shape(flat, 4, s);
+  EXPECT_FALSE(McaElementShape::invert(s, inv));
+  const double chain[2][3] = {{1, 0, 0}, {-1, 0.01, 0.01}};
+  shape(chain, 2, s);
+  EXPECT_FALSE(McaElementShape::invert(s, inv));
+}
+
+TEST(McaElementShape, GradientOfAnAffineDisplacementIsItsMatrix)
+{
+  const double h[3][3] = {{0.01, 0.002, -0.003}, {0.0, -0.02, 0.004}, {0.001, 0.0, 0.005}};
+  double s[15] = {0};
+  shape(FCC, 12, s);
+  for (int j = 0; j < 12; j++) {
+    double dx[3];
+    for (int a = 0; a < 3; a++) dx[a] = h[a][0] * FCC[j][0] + h[a][1] * FCC[j][1] + h[a][2] * FCC[j][2];
+    for (int a = 0; a < 3; a++)
+      for (int b = 0; b < 3; b++) s[6 + 3 * a + b] += dx[a] * FCC[j][b];
+  }
+  double inv[6], grad[3][3];
+  ASSERT_TRUE(McaElementShape::invert(s, inv));
+  McaElementShape::gradient(s, inv, grad);
+  for (int a = 0; a < 3; a++)
+    for (int b = 0; b < 3; b++) EXPECT_NEAR(grad[a][b], h[a][b], 1e-15);
+}
