@@ -413,3 +413,40 @@ def test_removing_the_elements_state_stops_the_next_run():
                                                   "unfix PAIR_MCA_EOS"])
         with pytest.raises(Exception, match=r"fix PAIR_MCA_EOS \(the elements' volume"):
             lmp.command("run 5 post no")
+
+
+@pytest.mark.parametrize("ratio", [0.9, 0.8])
+def test_slow_compression_follows_the_isentrope(ratio):
+    """A periodic elastic block compressed slowly along x by fix deform (positions remapped, no
+    velocities: the elements' volume comes from their positions): its volume ratio J is the
+    box's, its internal energy the isentrope's du/dJ = -p(J, u) (integrated here by RK4) within
+    0.5 %, and LAMMPS's pressure (the virial of all forces) the isentrope's mean stress within
+    2 % (the pairs' deviator at finite strain adds to it)."""
+    def pressure(j, u):
+        eta = 1.0 - j
+        ph = K * eta / (1.0 - S * eta) ** 2 if eta > 0 else K * eta
+        return ph + GAMMA0 * (u - 0.5 * ph * eta)
+    u_is, j, n = 0.0, 1.0, 4000
+    h = (ratio - 1.0) / n
+    for _ in range(n):
+        k1 = -pressure(j, u_is)
+        k2 = -pressure(j + h / 2, u_is + h / 2 * k1)
+        k3 = -pressure(j + h / 2, u_is + h / 2 * k2)
+        k4 = -pressure(j + h, u_is + h * k3)
+        u_is += h / 6 * (k1 + 2 * k2 + 2 * k3 + k4)
+        j += h
+    setup = [c.replace("boundary s p p", "boundary p p p").replace(f"yield {Y}", "")
+             for c in plate_setup("si", 3)]
+    with session() as lmp:
+        lmp.commands_list(setup + [
+            "fix 1 all nve/sphere", "run 0 post no",    # the elements' state exists from a run
+            "compute pa all property/atom d_mca_dvolume d_mca_energy",
+            "compute r all reduce ave c_pa[1] c_pa[2]", "thermo_style custom step press c_r[1]",
+            f"fix 2 all deform 1 x scale {ratio} remap x",
+            f"run {int(40000 * (1.0 - ratio))} post no", "run 0 post no"])
+        j_mean = 1.0 + lmp.extract_compute("r", 0, 1)[0]
+        u_mean = lmp.extract_compute("r", 0, 1)[1]
+        press = lmp.get_thermo("press")
+    assert j_mean == pytest.approx(ratio, rel=2e-3)
+    assert u_mean == pytest.approx(u_is, rel=5e-3)
+    assert press == pytest.approx(pressure(ratio, u_is), rel=0.02)
