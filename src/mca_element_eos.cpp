@@ -219,24 +219,3 @@ void McaElementEos::tally_energy(double *total, double *per_atom) const
     if (per_atom) per_atom[i] += e;
   }
 }
-
-double McaElementEos::volume_ratio(int i) const
-{
-  return active() && laws[atom->type[i]].bulk > 0.0 ? 1.0 + atom->dvector[dvolume][i] : 0.0;
-}
-
-double McaElementEos::energy_density(int i) const
-{
-  return active() && laws[atom->type[i]].bulk > 0.0 ? atom->dvector[energy][i] : 0.0;
-}
-
-double McaElementEos::pressure(int i) const
-{
-  if (!active() || laws[atom->type[i]].bulk == 0.0) return 0.0;
-  return laws[atom->type[i]].pressure(volume_ratio(i), energy_density(i));
-}
-
-double McaElementEos::viscosity(int i) const
-{
-  return active() && laws[atom->type[i]].bulk > 0.0 ? atom->dvector[visc][i] : 0.0;
-}

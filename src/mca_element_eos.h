@@ -129,13 +129,6 @@ namespace ClusterDyn {
     // wanted)
     void tally_energy(double *total, double *per_atom) const;
 
-    // of an owned element: its volume ratio J, internal energy per reference volume u,
-    // pressure p and bulk viscosity q (energy/volume); 0 where its material has no shock law
-    double volume_ratio(int i) const;
-    double energy_density(int i) const;
-    double pressure(int i) const;
-    double viscosity(int i) const;
-
    private:
     McaExchange &exchange;
     double **sums, **pressures, **heat;

@@ -63,8 +63,6 @@ namespace ClusterDyn {
     void request_element_stress() { stress.request(); }
     double **element_stress() const { return stress.current(); }
     double packing_fraction() const { return setting.fraction; }
-    // for compute mca/atom: the elements' shock equation of state (McaElementEos)
-    const McaElementEos &element_eos() const { return eos; }
 
    private:
     McaSettings setting;

@@ -104,7 +104,7 @@ TEST(McaLinkedPair, StepTransmitsTheIntactShareOrBreaks)
   const double a = 10.0, r = 1.05;    // sigma = 0.5
   Link link(1.0, 0.3);
   StateTally changes;
-  const McaPairTally tally{changes, 0.5, nullptr, 0, 1, 1.0, 1.0, true};
+  const McaPairTally tally{changes, 0.5, nullptr, 0, 1, 1.0, 1.0, true, nullptr};
   McaPairForce out;
   const McaPairFrame p = frame_along_x(r);
   const double omega[3] = {0.0, 0.0, 0.0};
@@ -129,7 +129,7 @@ TEST(McaLinkedPair, PressureAddsItsForceAndItsNormalStressBreaks)
   const double a = 10.0, r = 1.05;
   Link link(1.0, 0.3);
   StateTally changes;
-  const McaPairTally tally{changes, 1.0, nullptr, 0, 1, 1.0, 1.0, true};
+  const McaPairTally tally{changes, 1.0, nullptr, 0, 1, 1.0, 1.0, true, nullptr};
   McaPairForce out;
   const McaPairFrame p = frame_along_x(r);
   const double omega[3] = {0.0, 0.0, 0.0};

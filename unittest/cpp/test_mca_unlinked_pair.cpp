@@ -69,7 +69,7 @@ TEST(McaUnlinkedPair, SlidingAtTheCapDissipatesMuSigmaPerDistance)
   double v[C::NVALUES] = {};
   int word = 0;
   StateTally changes;
-  const McaPairTally tally{changes, 1.0, nullptr, 0, 1, 2.0 * a, 2.0 * a, true};
+  const McaPairTally tally{changes, 1.0, nullptr, 0, 1, 2.0 * a, 2.0 * a, true, nullptr};
   McaPairForce out;
   const McaPairFrame p = frame(r, ri, rj);
   touch.step(model, word, 0, v, p, nullptr, a, nullptr, nullptr, 0.0, tally, true, out);
@@ -98,7 +98,7 @@ TEST(McaUnlinkedPair, WeldsPressedAtTheWeldStressIfTheTypesLink)
   McaPairModel model;
   model.friction = McaFriction{0.0, 0.0, 0.5};
   StateTally changes;
-  const McaPairTally tally{changes, 1.0, nullptr, 0, 1, 20.0, 20.0, true};
+  const McaPairTally tally{changes, 1.0, nullptr, 0, 1, 20.0, 20.0, true, nullptr};
   McaPairForce out;
   const McaPairFrame p = frame(r, ri, rj);
   const McaUnlinkedPair touch(ri, rj, a, r);

@@ -21,7 +21,7 @@ import re
 import numpy as np
 import pytest
 
-from conftest import run_lmp, session
+from conftest import PLUGIN, run_lmp, session
 
 RHO0, C0, S, GAMMA0, G, Y = 2703.0, 5350.0, 1.34, 2.0, 26.0e9, 0.29e9
 K = RHO0 * C0 ** 2
@@ -78,7 +78,7 @@ def piston(units, up, ncell=50):
     """Drive a piston (4 planes moved at up) into the target; measure at 30 % and 75 % of the
     transit: the front's speed, the piston's stress, the shocked elements' specific energy,
     the energy held against the piston's work.  SI values."""
-    L, V, R, P, M = UNITS[units]
+    L, V, _, P, _ = UNITS[units]
     T = L / V                                   # the style's time per second
     us_h = C0 + S * up
     with session() as lmp:
@@ -170,14 +170,13 @@ thermo 100
 
 
 def impact_script(units="si", v=500.0, extra="", dt_share=1.0, elastic=False):
-    L, V, R, P, _ = UNITS[units]
-    import conftest
+    L, V, _, P, _ = UNITS[units]
     setup = plate_setup(units, 30, boundary="s p p", extra=extra)
     if elastic:
         setup = [c.replace(f"yield {Y * P}", "") for c in setup]
     setup = [f"timestep {0.1 * dt_share * D * L / (CL * V)}" if c.startswith("timestep") else c
              for c in setup]
-    return IMPACT.format(plugin=conftest.PLUGIN, setup="\n".join(setup), v=v * V)
+    return IMPACT.format(plugin=PLUGIN, setup="\n".join(setup), v=v * V)
 
 
 @pytest.mark.parametrize("units,elastic", [("si", True), ("si", False), ("metal", False)])
@@ -223,8 +222,7 @@ def test_two_ranks_and_a_restart_give_the_same_impact(tmp_path):
             name="in.mpi")
     run_lmp(tmp_path, impact_script() + "run 150\nwrite_restart half.restart\nrun 150\n"
             + dump.format(name="straight.dump"), name="in.straight")
-    import conftest
-    run_lmp(tmp_path, f"plugin load {conftest.PLUGIN}\nread_restart half.restart\n"
+    run_lmp(tmp_path, f"plugin load {PLUGIN}\nread_restart half.restart\n"
             "comm_modify vel yes\nneighbor 2.5e-6 bin\nneigh_modify every 1 delay 0 check yes\n"
             "fix 1 all nve/sphere\nrun 150\n" + dump.format(name="restarted.dump"),
             name="in.restarted")
@@ -288,9 +286,8 @@ EXAMPLE = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..", "e
 
 def example(tmp_path, name, **var):
     """An input of examples/mca-shock run in tmp_path with the plugin under test."""
-    import conftest
     text = open(os.path.join(EXAMPLE, name)).read().replace("clusterdynplugin.so",
-                                                             conftest.PLUGIN)
+                                                             PLUGIN)
     args = [a for k, x in dict(here=EXAMPLE + "/", **var).items() for a in ("-var", k, str(x))]
     return run_lmp(tmp_path, text, name=name, args=args)
 
@@ -389,7 +386,6 @@ def test_a_data_file_after_a_run_reads_back_and_restarts_the_elements(tmp_path):
     """write_data after a run: the pair_coeff words come back, the elements' state (fix
     PAIR_MCA_EOS) is not in the file (read_data would meet it before the style makes the fix),
     so the read system starts at J = 1, u = 0 and runs."""
-    import conftest
     with session() as lmp:
         lmp.commands_list(plate_setup("si", 4) + [
             "velocity all set 100 0 0 units box", "region fly block INF 1.9 INF INF INF INF",
