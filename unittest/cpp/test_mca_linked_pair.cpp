@@ -98,24 +98,37 @@ TEST(McaLinkedPair, HoldsDamagesAndBreaksAtTheResponsesStresses)
   EXPECT_EQ(lost, breaking.intact);
 }
 
+// a link of area 0.3 at rest length 1 stretched to 1.05 with a = 10 (sigma = 0.5), strength 1,
+// stepped without rotation; w: its tally's weight (1/2: a ghost pair with newton off)
+struct Stepped {
+  const McaResponse response{1.0, 0.0};
+  const double a = 10.0;
+  Link link{1.0, 0.3};
+  StateTally changes;
+  const McaPairTally tally;
+  McaPairForce out;
+  const McaPairFrame p = frame_along_x(1.05);
+  const double omega[3] = {0.0, 0.0, 0.0};
+  explicit Stepped(double w) : tally{changes, w, nullptr, 0, 1, 1.0, 1.0, true, nullptr} {}
+  bool step(double sigma, const McaPressureLoad *pressure)
+  {
+    McaLinkedPair law(response, link.v, a);
+    return law.step(sigma, 1.0, 0.0, p, nullptr, omega, omega, 0.01, tally, true, pressure, out);
+  }
+};
+
 TEST(McaLinkedPair, StepTransmitsTheIntactShareOrBreaks)
 {
-  const McaResponse response{1.0, 0.0};
-  const double a = 10.0, r = 1.05;    // sigma = 0.5
-  Link link(1.0, 0.3);
-  StateTally changes;
-  const McaPairTally tally{changes, 0.5, nullptr, 0, 1, 1.0, 1.0, true, nullptr};
-  McaPairForce out;
-  const McaPairFrame p = frame_along_x(r);
-  const double omega[3] = {0.0, 0.0, 0.0};
-  McaLinkedPair law(response, link.v, a);
-  ASSERT_TRUE(law.step(0.5, 1.0, 0.0, p, nullptr, omega, omega, 0.01, tally, true, nullptr, out));
+  Stepped s(0.5);
+  const double a = s.a;
+  StateTally &changes = s.changes;
+  McaPairForce &out = s.out;
+  ASSERT_TRUE(s.step(0.5, nullptr));
   EXPECT_NEAR(out.fi[0], 0.3 * 0.5, 1e-15);
   EXPECT_NEAR(out.evdwl, 0.3 * 0.5 * a * 0.05 * 0.05, 1e-15);
   EXPECT_EQ(changes.broken, 0.0);
   const double energy = out.evdwl;
-  McaLinkedPair again(response, link.v, a);
-  EXPECT_FALSE(again.step(1.0, 1.0, 0.0, p, nullptr, omega, omega, 0.01, tally, true, nullptr, out));
+  EXPECT_FALSE(s.step(1.0, nullptr));
   EXPECT_EQ(changes.broken, 0.5);                         // a pair with a ghost, newton off
   EXPECT_NEAR(changes.ejump, 0.5 * energy, 1e-15);        // the energy it took with it
 }
@@ -125,21 +138,13 @@ TEST(McaLinkedPair, PressureAddsItsForceAndItsNormalStressBreaks)
   // strength 1; the pair's own stress 0.5 holds, with its elements' mean stress of 0.6 in
   // tension it breaks; pressed by a mean stress of -0.6 it holds and transmits the pressure's
   // force (intact share 1)
-  const McaResponse response{1.0, 0.0};
-  const double a = 10.0, r = 1.05;
-  Link link(1.0, 0.3);
-  StateTally changes;
-  const McaPairTally tally{changes, 1.0, nullptr, 0, 1, 1.0, 1.0, true, nullptr};
-  McaPairForce out;
-  const McaPairFrame p = frame_along_x(r);
-  const double omega[3] = {0.0, 0.0, 0.0};
+  Stepped s(1.0);
+  McaPairForce &out = s.out;
   const McaPressureLoad push{{-0.3 * 0.6, 0.01, 0.0}, -0.6};    // compression, pushing i away
-  McaLinkedPair law(response, link.v, a);
-  ASSERT_TRUE(law.step(0.5, 1.0, 0.0, p, nullptr, omega, omega, 0.01, tally, true, &push, out));
+  ASSERT_TRUE(s.step(0.5, &push));
   EXPECT_NEAR(out.fi[0], 0.3 * 0.5 - 0.3 * 0.6, 1e-15);
   EXPECT_NEAR(out.fi[1], 0.01, 1e-15);
   const McaPressureLoad pull{{0.3 * 0.6, 0.0, 0.0}, 0.6};        // tension, pulling i to j
-  McaLinkedPair again(response, link.v, a);
-  EXPECT_FALSE(again.step(0.5, 1.0, 0.0, p, nullptr, omega, omega, 0.01, tally, true, &pull, out));
-  EXPECT_EQ(changes.broken, 1.0);
+  EXPECT_FALSE(s.step(0.5, &pull));
+  EXPECT_EQ(s.changes.broken, 1.0);
 }

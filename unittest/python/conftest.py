@@ -73,6 +73,20 @@ def run_lmp(tmp_path, script, nprocs=1, name="in.test", env=None, args=()):
     return out.stdout
 
 
+def thermo_rows(stdout):
+    """The rows of the last thermo block (after the last header starting with 'Step'), as an
+    array."""
+    lines = stdout.splitlines()
+    head = [i for i, l in enumerate(lines) if l.split()[:1] == ["Step"]][-1]
+    rows = []
+    for line in lines[head + 1:]:
+        words = line.split()
+        if not words or not words[0].isdigit():
+            break
+        rows.append([float(w) for w in words])
+    return np.array(rows)
+
+
 def last_thermo(stdout, columns):
     """Values of the last thermo line whose header starts with 'Step'."""
     lines = stdout.splitlines()

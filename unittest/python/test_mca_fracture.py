@@ -12,7 +12,7 @@ import shutil
 
 import numpy as np
 import pytest
-from conftest import PLUGIN, run_lmp
+from conftest import PLUGIN, run_lmp, thermo_rows
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 EXAMPLE = os.path.join(HERE, "..", "..", "examples", "mca-fracture")
@@ -22,16 +22,7 @@ def example(tmp_path, name, **var):
     """Run an input of the example (with the plugin under test) in tmp_path; thermo rows."""
     text = open(os.path.join(EXAMPLE, name)).read().replace("clusterdynplugin.so", PLUGIN)
     args = [a for k, v in var.items() for a in ("-var", k, str(v))]
-    out = run_lmp(tmp_path, text, name=name, args=args)
-    lines = out.splitlines()
-    head = [i for i, l in enumerate(lines) if l.split()[:1] == ["Step"]][-1]
-    rows = []
-    for line in lines[head + 1:]:
-        words = line.split()
-        if not words or not words[0].isdigit():
-            break
-        rows.append([float(w) for w in words])
-    return np.array(rows)
+    return thermo_rows(run_lmp(tmp_path, text, name=name, args=args))
 
 
 def last_frame(path):

@@ -21,7 +21,7 @@ import re
 import numpy as np
 import pytest
 
-from conftest import PLUGIN, run_lmp, session
+from conftest import PLUGIN, run_lmp, session, thermo_rows
 
 RHO0, C0, S, GAMMA0, G, Y = 2703.0, 5350.0, 1.34, 2.0, 26.0e9, 0.29e9
 K = RHO0 * C0 ** 2
@@ -187,15 +187,7 @@ def test_an_impact_without_fracture_keeps_its_energy(tmp_path, units, elastic):
     share = 1.0 if elastic else 0.25
     out = run_lmp(tmp_path, impact_script(units, dt_share=share, elastic=elastic)
                   + f"thermo {int(100 / share)}\nrun {int(1200 / share)}\n")
-    lines = out.splitlines()
-    head = [i for i, l in enumerate(lines) if l.split()[:1] == ["Step"]][-1]
-    rows = []
-    for l in lines[head + 1:]:
-        w = l.split()
-        if not w or not w[0].isdigit():
-            break
-        rows.append([float(c) for c in w])
-    rows = np.array(rows)
+    rows = thermo_rows(out)
     e0 = rows[0, 4]
     assert rows[0, 1] == pytest.approx(e0)             # all kinetic at the start
     assert rows[:, 2].max() > 0.3 * e0                 # and much of it went into the elements
