@@ -10,6 +10,7 @@
 #include "pair_mca.h"
 
 #include "atom.h"
+#include "domain.h"
 #include "error.h"
 #include "force.h"
 #include "memory.h"
@@ -68,7 +69,7 @@ void ComputeMcaAtom::compute_peratom()
     v[EQUIVALENT] = sqrt(1.5 * (dxx * dxx + dyy * dyy + dzz * dzz) +
                          3.0 * (v[SXY] * v[SXY] + v[SXZ] * v[SXZ] + v[SYZ] * v[SYZ]));
     v[LINKS] = s[i][McaElementStress::LINKS];
-    v[VOLUME] = McaElement::volume(atom->radius[i], pair->packing_fraction());
+    v[VOLUME] = McaElement::volume(atom->radius[i], pair->packing_fraction(), domain->dimension);
   }
 }
 

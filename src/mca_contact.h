@@ -60,22 +60,17 @@ namespace ClusterDyn {
 
     // the moment of a link (the review's K_ij) from the relative rotation rot of j against i:
     // a circular contact of area S bends with the stiffness a I and twists with a J
-    // (I = S^2 / (4 pi), J = 2 I: the second moments of the area); m: the moment on i (its
-    // opposite acts on j); returns the energy
-    static double moment(const double *rot, const double *n, double a, double area, double *m)
+    // (I = S^2 / (4 pi), J = 2 I: the second moments of the area); in 2d (planar) the contact
+    // is a strip of length S and unit thickness, I = S^3 / 12, and only bends; m: the moment
+    // on i (its opposite acts on j); returns the energy
+    static double moment(const double *rot, const double *n, double a, double area, bool planar,
+                         double *m)
     {
-      const double bend = a * area * area / (4.0 * M_PI), twist = 2.0 * bend;
+      const double bend = planar ? a * area * area * area / 12.0 : a * area * area / (4.0 * M_PI);
+      const double twist = 2.0 * bend;
       const double along = dot(rot, n);
       for (int k = 0; k < 3; k++) m[k] = bend * (rot[k] - along * n[k]) + twist * along * n[k];
       return 0.5 * (bend * (dot(rot, rot) - along * along) + twist * along * along);
-    }
-
-    // the contact area an unlinked pair pushes through: a close-packed element's face
-    // (sqrt(2) R^2 on fcc) for the harmonic mean radius
-    static double unlinked_area(double ri, double rj)
-    {
-      const double rh = 2.0 * ri * rj / (ri + rj);
-      return M_SQRT2 * rh * rh;
     }
 
     static double dot(const double *a, const double *b)

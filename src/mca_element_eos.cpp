@@ -9,6 +9,7 @@
 #include "mca_element_shape.h"
 
 #include "atom.h"
+#include "domain.h"
 #include "error.h"
 #include "fix_property_atom.h"
 #include "force.h"
@@ -89,7 +90,7 @@ double McaElementEos::memory_usage() const
 
 double McaElementEos::volume(int i) const
 {
-  return McaElement::volume(atom->radius[i], fraction);
+  return McaElement::volume(atom->radius[i], fraction, domain->dimension);
 }
 
 // the mass of an element is rho0 Omega ("set density rho0/F"): an element of another density

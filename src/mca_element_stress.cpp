@@ -8,6 +8,7 @@
 #include "atoms_fingerprint.h"
 
 #include "atom.h"
+#include "domain.h"
 #include "force.h"
 #include "memory.h"
 #include "update.h"
@@ -44,7 +45,7 @@ void McaElementStress::to_owners(bool to_pressure)
   exchange.to_owners(rows, COLUMNS);
   const double scale = to_pressure ? force->nktv2p : 1.0;
   for (int i = 0; i < atom->nlocal; i++) {
-    const double to_stress = scale / McaElement::volume(atom->radius[i], fraction);
+    const double to_stress = scale / McaElement::volume(atom->radius[i], fraction, domain->dimension);
     for (int k = 0; k < 6; k++) rows[i][k] *= to_stress;
   }
   if (to_pressure) {

@@ -21,13 +21,16 @@
 using namespace LAMMPS_NS;
 using namespace ClusterDyn;
 
-void McaGuard::check_style(int tail_flag, int offset_flag) const
+void McaGuard::check_style(int tail_flag, int offset_flag, int plane) const
 {
   if (!atom->radius_flag || !atom->omega_flag || !atom->torque_flag)
     error->all(FLERR, "Pair mca requires atom_style sphere (elements with radius, omega and "
                "torque)");
-  if (domain->dimension != 3)
-    error->all(FLERR, "Pair mca is three-dimensional (dimension 2 is not supported)");
+  if (domain->dimension == 2 && plane == McaSettings::NONE)
+    error->all(FLERR, "Pair mca in dimension 2 needs 'plane strain' or 'plane stress' in "
+               "pair_style mca (the elements are discs of unit thickness: which state they are in)");
+  if (domain->dimension == 3 && plane != McaSettings::NONE)
+    error->all(FLERR, "Pair mca: plane strain|stress is for dimension 2 (this box is 3d)");
   if (comm->ghost_velocity == 0)
     error->all(FLERR, "Pair mca needs the velocities of ghost elements: comm_modify vel yes");
   if (utils::strmatch(update->integrate_style, "^respa"))
@@ -86,7 +89,7 @@ void McaGuard::at_setup(const std::vector<McaMaterial> &scaled, double fraction)
   double shortest = INFINITY;
   for (int i = 0; i < atom->nlocal; i++) {
     const McaMaterial &m = scaled[type[i]];
-    const double rho = rmass[i] / McaElement::volume(radius[i], fraction);
+    const double rho = rmass[i] / McaElement::volume(radius[i], fraction, domain->dimension);
     shortest = MIN(shortest, 2.0 * radius[i] * sqrt(rho / (m.bulk + 4.0 * m.shear / 3.0)));
   }
   double all;

@@ -14,6 +14,7 @@
 #define LMP_CLUSTERDYN_MCA_GUARD_H
 
 #include "mca_material.h"
+#include "mca_settings.h"
 #include "pointers.h"
 
 #include <vector>
@@ -26,7 +27,7 @@ namespace ClusterDyn {
     McaGuard(LAMMPS *lmp) : Pointers(lmp) {}
     // init_style(): the atom style, dimension, communication and integrator the style needs;
     // pair_modify tail and shift do not apply
-    void check_style(int tail_flag, int offset_flag) const;
+    void check_style(int tail_flag, int offset_flag, int plane) const;
     void init();
     double largest_radius(int type) const { return rmax[type]; }
     void each_step() const;

@@ -40,9 +40,11 @@ namespace ClusterDyn {
     double a;          // the stiffness of its halves in series
     double intact;     // 1 - D
     double area;       // S
+    bool planar;       // dimension 2: the contact is a strip (its bending, McaContact::moment)
 
-    McaLinkedPair(const McaResponse &response, double *v, double a) :
-        response(response), v(v), a(a), intact(response.intact(v[C::KAPPA])), area(v[C::AREA])
+    McaLinkedPair(const McaResponse &response, double *v, double a, bool planar = false) :
+        response(response), v(v), a(a), intact(response.intact(v[C::KAPPA])), area(v[C::AREA]),
+        planar(planar)
     {
     }
 
@@ -85,7 +87,7 @@ namespace ClusterDyn {
     // moment on i)
     double energy(const double *n, double elong, double tau2, double *moment) const
     {
-      const double erot = C::moment(v + C::ROT, n, a, area, moment);
+      const double erot = C::moment(v + C::ROT, n, a, area, planar, moment);
       return area * (0.5 * a * elong * elong + 0.5 * tau2 / a) + erot;
     }
 

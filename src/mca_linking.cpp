@@ -9,6 +9,7 @@
 #include "mca_pair_walk.h"
 
 #include "atom.h"
+#include "domain.h"
 #include "comm.h"
 #include "error.h"
 #include "force.h"
@@ -78,8 +79,11 @@ void McaLinking::areas(const NeighList *list, const StatePass &pass, double frac
   walk_pairs(list, [&](int i, int j, int jj) {
     double *v = pass.pair_values(i, jj);
     if (!state_now(pass.words[i][jj]) || v[C::AREA] != 0.0) return;
-    const double si = 3.0 * McaElement::volume(radius[i], fraction) / (zcount[i][0] * radius[i]);
-    const double sj = 3.0 * McaElement::volume(radius[j], fraction) / (zcount[j][0] * radius[j]);
+    const int dim = domain->dimension;
+    const double si = McaElement::area_share(McaElement::volume(radius[i], fraction, dim),
+                                             zcount[i][0], radius[i], dim);
+    const double sj = McaElement::area_share(McaElement::volume(radius[j], fraction, dim),
+                                             zcount[j][0], radius[j], dim);
     v[C::AREA] = 0.5 * (si + sj);
   });
 }

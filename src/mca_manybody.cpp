@@ -8,6 +8,7 @@
 #include "mca_element.h"
 
 #include "atom.h"
+#include "domain.h"
 #include "memory.h"
 
 using namespace LAMMPS_NS;
@@ -36,7 +37,7 @@ double McaManybody::memory_usage() const
 
 double McaManybody::volume(int i) const
 {
-  return McaElement::volume(atom->radius[i], fraction);
+  return McaElement::volume(atom->radius[i], fraction, domain->dimension);
 }
 
 void McaManybody::begin_strain(int nall)

@@ -112,6 +112,13 @@ namespace ClusterDyn {
     // of the pairs' 2G eps out, -2G/3
     double volumetric_lambda() const { return (shock() ? 0.0 : bulk) - 2.0 * shear / 3.0; }
 
+    // in plane stress (sigma_zz = 0) the in-plane volumetric modulus is 2 G lambda / (lambda + 2G)
+    McaMaterial in_plane_stress() const
+    {
+      McaMaterial m = *this;
+      m.lambda = 2.0 * shear * lambda / (lambda + 2.0 * shear);
+      return m;
+    }
     // the stresses in energy/volume: pressure / nktv2p (eta likewise)
     McaMaterial scaled(double p2e) const
     {

@@ -16,9 +16,10 @@
 using namespace LAMMPS_NS;
 using namespace ClusterDyn;
 
-void McaPlasticity::init(const std::vector<McaMaterial> &materials)
+void McaPlasticity::init(const std::vector<McaMaterial> &materials, bool in_plane_strain)
 {
   on = false;
+  plane_strain = in_plane_strain;
   for (const McaMaterial &m : materials)
     if (m.yield > 0.0) on = true;
   if (on && !modify->get_fix_by_id(FIX_ID)) {
@@ -60,11 +61,12 @@ void McaPlasticity::return_map(double *const *stress, const std::vector<McaMater
   for (int i = 0; i < atom->nlocal; i++) {
     const double *s = stress[i];
     const McaMaterial &m = scaled[type[i]];
-    const double mean = (s[0] + s[1] + s[2]) / 3.0;
+    const double zz = plane_strain ? m.poisson() * (s[0] + s[1]) : s[2];
+    const double mean = (s[0] + s[1] + zz) / 3.0;
     out[i][0] = 1.0;
     out[i][1] = mean;
     if (m.yield == 0.0) continue;
-    const double dxx = s[0] - mean, dyy = s[1] - mean, dzz = s[2] - mean;
+    const double dxx = s[0] - mean, dyy = s[1] - mean, dzz = zz - mean;
     const double sint = sqrt(1.5 * (dxx * dxx + dyy * dyy + dzz * dzz +
                                     2.0 * (s[3] * s[3] + s[4] * s[4] + s[5] * s[5])));
     const double yield_now = m.yield + m.hardening * eps_p[i];

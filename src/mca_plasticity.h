@@ -37,7 +37,9 @@ namespace ClusterDyn {
     }
     ~McaPlasticity() override;
     // a material that yields: the per-element plastic strain (made once, kept after)
-    void init(const std::vector<McaMaterial> &materials);
+    // plane_strain: dimension 2 in plane strain, where sigma_zz = nu (sigma_xx + sigma_yy)
+    // (elastic) enters the von Mises stress; in plane stress and 3d Love's sum gives it
+    void init(const std::vector<McaMaterial> &materials, bool plane_strain);
     bool active() const { return on; }
     void grow(int nmax_atoms);
     double memory_usage() const { return (double) nmax * COLUMNS * sizeof(double); }
@@ -54,6 +56,7 @@ namespace ClusterDyn {
    private:
     McaExchange &exchange;
     bool on;
+    bool plane_strain = false;
     double **returned;    // per element: phi and the mean stress
     int nmax;
     double *strain_array() const;

@@ -1,6 +1,7 @@
 /* -*- c++ -*- ----------------------------------------------------------
    Cluster-dynamics plugin for LAMMPS: the settings of pair_style mca,
      pair_style mca fraction F [tolerance T] [manybody yes|no]
+                    [plane strain|stress]   (dimension 2: required)
    parsed whole, with their restart (which names the layout of a pair's
    state, so that a restart of another layout is refused).
 ------------------------------------------------------------------------- */
@@ -26,8 +27,14 @@ namespace ClusterDyn {
     double fraction = 0.0;     // packing fraction: element volume = sphere volume / fraction
     double tolerance = 0.05;   // pairs closer than (1 + tolerance)(R_i + R_j) are linked
     int manybody = 1;          // the volumetric (many-body) term
+    // dimension 2: the elements are discs of unit thickness in plane strain (eps_zz = 0) or
+    // plane stress (sigma_zz = 0); NONE: not given (dimension 3)
+    enum Plane { NONE = 0, STRAIN = 1, STRESS = 2 };
+    int plane = NONE;
 
     static constexpr double REACH = 1.25;    // neighbour cutoff / linking distance
+    // the layout of a restart: these settings' (1000: with plane) and a pair's state
+    static constexpr int LAYOUT = 1000 + McaContact::NVALUES;
 
     static McaSettings parse(LAMMPS *lmp, int narg, char **arg)
     {
@@ -36,9 +43,9 @@ namespace ClusterDyn {
       KeywordSet seen(lmp, who);
       for (int i = 0; i < narg; i += 2) {
         const std::string key = arg[i];
-        if (key != "fraction" && key != "tolerance" && key != "manybody")
+        if (key != "fraction" && key != "tolerance" && key != "manybody" && key != "plane")
           lmp->error->all(FLERR, "{}: unknown keyword '{}' (expected fraction, tolerance, "
-                          "manybody)", who, key);
+                          "manybody, plane)", who, key);
         if (i + 1 >= narg) lmp->error->all(FLERR, "{}: {} needs a value", who, key);
         seen.add(key);
         const char *val = arg[i + 1];
@@ -53,6 +60,11 @@ namespace ClusterDyn {
           s.tolerance = number_arg(who, "tolerance", val, lmp);
           if (!(s.tolerance >= 0.0 && s.tolerance < 1.0))
             lmp->error->all(FLERR, "{}: tolerance must be in [0, 1) (got {})", who, val);
+        } else if (key == "plane") {
+          const std::string v = val;
+          if (v != "strain" && v != "stress")
+            lmp->error->all(FLERR, "{}: plane must be strain or stress (got '{}')", who, v);
+          s.plane = v == "strain" ? STRAIN : STRESS;
         } else {
           const std::string v = val;
           if (v != "yes" && v != "no")
@@ -66,14 +78,15 @@ namespace ClusterDyn {
       return s;
     }
 
-    // first the layout of a pair's state (McaContact::NVALUES): restarts of another are refused
+    // first the layout (LAYOUT): restarts of another are refused
     void write_restart(FILE *fp) const
     {
-      const int layout = McaContact::NVALUES;
+      const int layout = LAYOUT;
       fwrite(&layout, sizeof(int), 1, fp);
       fwrite(&fraction, sizeof(double), 1, fp);
       fwrite(&tolerance, sizeof(double), 1, fp);
       fwrite(&manybody, sizeof(int), 1, fp);
+      fwrite(&plane, sizeof(int), 1, fp);
     }
 
     void read_restart(FILE *fp, LAMMPS *lmp)
@@ -81,7 +94,7 @@ namespace ClusterDyn {
       int layout = 0;
       if (lmp->comm->me == 0) utils::sfread(FLERR, &layout, sizeof(int), 1, fp, nullptr, lmp->error);
       MPI_Bcast(&layout, 1, MPI_INT, 0, lmp->world);
-      if (layout != McaContact::NVALUES)
+      if (layout != LAYOUT)
         lmp->error->all(FLERR, "Pair mca: the restart file was written by another version of the "
                         "plugin (its pairs keep another state): start from a data file, the links "
                         "are made anew");
@@ -89,10 +102,12 @@ namespace ClusterDyn {
         utils::sfread(FLERR, &fraction, sizeof(double), 1, fp, nullptr, lmp->error);
         utils::sfread(FLERR, &tolerance, sizeof(double), 1, fp, nullptr, lmp->error);
         utils::sfread(FLERR, &manybody, sizeof(int), 1, fp, nullptr, lmp->error);
+        utils::sfread(FLERR, &plane, sizeof(int), 1, fp, nullptr, lmp->error);
       }
       MPI_Bcast(&fraction, 1, MPI_DOUBLE, 0, lmp->world);
       MPI_Bcast(&tolerance, 1, MPI_DOUBLE, 0, lmp->world);
       MPI_Bcast(&manybody, 1, MPI_INT, 0, lmp->world);
+      MPI_Bcast(&plane, 1, MPI_INT, 0, lmp->world);
     }
   };
 

@@ -61,10 +61,11 @@ void McaTypeTable::coeff(int narg, char **arg)
   }
 }
 
-void McaTypeTable::init()
+void McaTypeTable::init(bool plane_stress)
 {
   in_energy.clear();
-  for (const McaMaterial &m : material) in_energy.push_back(m.scaled(1.0 / force->nktv2p));
+  for (const McaMaterial &m : material)
+    in_energy.push_back((plane_stress ? m.in_plane_stress() : m).scaled(1.0 / force->nktv2p));
 }
 
 bool McaTypeTable::responds() const

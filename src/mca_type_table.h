@@ -27,8 +27,9 @@ namespace ClusterDyn {
     explicit McaTypeTable(LAMMPS *lmp) : Pointers(lmp) {}
     void allocate();    // for atom->ntypes: nothing given yet, every pair of types links
     void coeff(int narg, char **arg);
-    // init_style(): the materials in energy/volume (pressure / nktv2p)
-    void init();
+    // init_style(): the materials in energy/volume (pressure / nktv2p), in plane stress with
+    // its in-plane lambda
+    void init(bool plane_stress);
     // init_one(): the type pair's model, both orders (an error names a type without material)
     void make_model(int itype, int jtype);
     const McaPairModel &model(int itype, int jtype) const

@@ -4,7 +4,7 @@
    spline_laws.h; a contact with dry friction keeps its tangential stress
    in the pair's doubles while it lasts, mca_contact.h):
      compression  S_u a (r - R_i - R_j) on the face S_u of the harmonic mean
-                  radius (McaContact::unlinked_area)
+                  radius (McaElement::unlinked_area)
      friction     the elastic tangential stress capped at mu |sigma_n| and
                   eta v_t (mca_friction.h)
      welding      pressed at the weld stress, the pair links where it is
@@ -17,6 +17,7 @@
 #define LMP_CLUSTERDYN_MCA_UNLINKED_PAIR_H
 
 #include "mca_contact.h"
+#include "mca_element.h"
 #include "mca_pair_model.h"
 #include "mca_pair_tally.h"
 #include "mca_pair_walk.h"
@@ -33,8 +34,8 @@ namespace ClusterDyn {
     double sigma;         // a overlap
     double ri_plus_rj;    // where a weld links the pair
 
-    McaUnlinkedPair(double ri, double rj, double a, double r) :
-        area(C::unlinked_area(ri, rj)), overlap(r - ri - rj), sigma(a * overlap),
+    McaUnlinkedPair(double ri, double rj, double a, double r, int dimension) :
+        area(McaElement::unlinked_area(ri, rj, dimension)), overlap(r - ri - rj), sigma(a * overlap),
         ri_plus_rj(ri + rj)
     {
     }

@@ -225,7 +225,7 @@ void PairMCA::pair_forces(const StatePass &pass, StateTally &changes)
     double *v = pass.pair_values(i, jj);
     McaPairForce out;
     if (linked) {
-      McaLinkedPair link(model.response, v, a);
+      McaLinkedPair link(model.response, v, a, domain->dimension == 2);
       const double sigma = plastic ? v[C::SIG] : trial_stresses(i, j, v, p, turning);
       // with a shock law on either side the pair takes its elements' pressure; on both, it
       // returns its deviator about zero and has the hourglass spring
@@ -242,7 +242,7 @@ void PairMCA::pair_forces(const StatePass &pass, StateTally &changes)
       }
       if (eflag_either) out.evdwl += link.intact * ehg;
     } else {
-      McaUnlinkedPair(ri, rj, a, p.r)
+      McaUnlinkedPair(ri, rj, a, p.r, domain->dimension)
           .step(model, word, pass.trial, v, p, turning, a, vel, omega, dt, tally, eflag_either, out);
     }
 
@@ -346,9 +346,14 @@ void PairMCA::coeff(int narg, char **arg)
 
 void PairMCA::init_style()
 {
-  guard.check_style(tail_flag, offset_flag);
+  guard.check_style(tail_flag, offset_flag, setting.plane);
   guard.init();
-  types.init();
+  types.init(setting.plane == McaSettings::STRESS);
+  if (domain->dimension == 2)
+    for (const McaMaterial &m : types.as_given())
+      if (m.shock())
+        error->all(FLERR, "Pair mca: the shock equation of state (pair_coeff ... shock) is "
+                   "three-dimensional: in dimension 2 give bulk K shear G");
   tracks_changes = setting.manybody && types.responds();
   manybody.init(types.scaled(), setting.fraction);
   eos.init(types.scaled(), setting.fraction);
@@ -359,7 +364,7 @@ void PairMCA::init_style()
     error->all(FLERR, "Pair mca: the elements' shock equation of state follows their volume "
                "through a run; minimize cannot move it (use the linear law, bulk K)");
   stress.init(setting.fraction);
-  plasticity.init(types.as_given());
+  plasticity.init(types.as_given(), setting.plane == McaSettings::STRAIN);
   neighbor->add_request(this, NeighConst::REQ_HISTORY);
   state.init();
 }

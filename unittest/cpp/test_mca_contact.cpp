@@ -2,7 +2,7 @@
 // "Rotations and objectivity"): two halves a_i = 2 G_i / R_i in series carry one stress;
 // Turn is the rotation by phi (against a rotation built from an orthonormal frame about the
 // axis); slide() turns tau with the contact so that a rigid rotation makes no stress, and adds
-// a du_t; moment() bends with a S^2/(4 pi) and twists with twice that, energy 1/2 m.phi.
+// a du_t; moment() bends with a S^2/(4 pi) and twists with twice that (a 2d strip: a S^3/12), energy 1/2 m.phi.
 #include "mca_contact.h"
 
 #include "gtest/gtest.h"
@@ -76,14 +76,6 @@ TEST(McaContact, HalvesInSeriesCarryOneStress)
   EXPECT_NEAR(McaContact::series(4.0, 4.0), 2.0, 1e-15);
 }
 
-TEST(McaContact, UnlinkedAreaIsAFaceOfTheHarmonicMeanRadius)
-{
-  EXPECT_NEAR(McaContact::unlinked_area(0.5, 0.5), std::sqrt(2.0) * 0.25, 1e-15);
-  const double rh = 2.0 * 0.5 * 2.0 / 2.5;    // 0.8
-  EXPECT_NEAR(McaContact::unlinked_area(0.5, 2.0), std::sqrt(2.0) * rh * rh, 1e-15);
-  EXPECT_NEAR(McaContact::unlinked_area(2.0, 0.5), McaContact::unlinked_area(0.5, 2.0), 1e-15);
-}
-
 TEST(McaContact, TurnIsTheRotationByPhi)
 {
   // about z by 90 degrees: x -> y, y -> -x
@@ -133,24 +125,35 @@ TEST(McaContact, MomentBendsAndTwists)
   const Vec n = unit({1.0, 1.0, 0.0});
   Vec m;
   const Vec phi_b = {0.0, 0.0, 0.02};    // about an axis across the pair: bending
-  double e = McaContact::moment(phi_b.data(), n.data(), a, area, m.data());
+  double e = McaContact::moment(phi_b.data(), n.data(), a, area, false, m.data());
   expect_vec(m, scaled(phi_b, bend), 1e-15);
   EXPECT_NEAR(e, 0.5 * bend * dot(phi_b, phi_b), 1e-17);
   const Vec phi_t = scaled(n, 0.03);    // about the pair's line: twisting, J = 2 I
-  e = McaContact::moment(phi_t.data(), n.data(), a, area, m.data());
+  e = McaContact::moment(phi_t.data(), n.data(), a, area, false, m.data());
   expect_vec(m, scaled(phi_t, 2.0 * bend), 1e-15);
   EXPECT_NEAR(e, bend * dot(phi_t, phi_t), 1e-17);
   // any rotation: E = 1/2 m.phi, and m = dE/dphi
   const Vec phi = {0.01, -0.03, 0.02};
-  e = McaContact::moment(phi.data(), n.data(), a, area, m.data());
+  e = McaContact::moment(phi.data(), n.data(), a, area, false, m.data());
   EXPECT_NEAR(e, 0.5 * dot(m, phi), 1e-17);
   const double h = 1e-6;
   for (int k = 0; k < 3; k++) {
     Vec p = phi, q = phi, mm;
     p[k] += h;
     q[k] -= h;
-    const double de = McaContact::moment(p.data(), n.data(), a, area, mm.data()) -
-        McaContact::moment(q.data(), n.data(), a, area, mm.data());
+    const double de = McaContact::moment(p.data(), n.data(), a, area, false, mm.data()) -
+        McaContact::moment(q.data(), n.data(), a, area, false, mm.data());
     EXPECT_NEAR(m[k], de / (2.0 * h), 1e-9 * bend) << k;
   }
+}
+
+// in 2d the contact is a strip of length S (unit thickness): I = S^3 / 12 about z
+TEST(McaContact, PlanarMomentBendsTheStrip)
+{
+  const double a = 3.0, area = 0.9, bend = a * area * area * area / 12.0;
+  const Vec n = unit({1.0, 1.0, 0.0}), phi = {0.0, 0.0, 0.02};
+  Vec m;
+  const double e = McaContact::moment(phi.data(), n.data(), a, area, true, m.data());
+  expect_vec(m, scaled(phi, bend), 1e-15);
+  EXPECT_NEAR(e, 0.5 * bend * dot(phi, phi), 1e-17);
 }

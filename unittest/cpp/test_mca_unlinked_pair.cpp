@@ -30,14 +30,14 @@ McaPairFrame frame(double r, double ri, double rj)
 TEST(McaUnlinkedPair, CompressionOnTheHarmonicMeanFace)
 {
   const double ri = 0.5, rj = 0.3, a = 7.0, r = 0.79;
-  const McaUnlinkedPair touch(ri, rj, a, r);
+  const McaUnlinkedPair touch(ri, rj, a, r, 3);
   const double rh = 2.0 * ri * rj / (ri + rj);
   EXPECT_NEAR(touch.area, std::sqrt(2.0) * rh * rh, 1e-15);
   EXPECT_NEAR(touch.sigma, a * (r - ri - rj), 1e-15);
   // the normal force is minus the slope of the energy S a overlap^2 / 2
   const double h = 1e-7;
   auto energy = [&](double rr) {
-    const McaUnlinkedPair t(ri, rj, a, rr);
+    const McaUnlinkedPair t(ri, rj, a, rr, 3);
     return 0.5 * t.area * a * t.overlap * t.overlap;
   };
   EXPECT_NEAR((energy(r + h) - energy(r - h)) / (2.0 * h), touch.area * touch.sigma, 1e-9);
@@ -65,7 +65,7 @@ TEST(McaUnlinkedPair, SlidingAtTheCapDissipatesMuSigmaPerDistance)
   const double ri = 0.5, rj = 0.5, a = 50.0, r = 0.98, mu = 0.3, du = 0.01;
   McaPairModel model;
   model.friction = McaFriction{mu, 0.0, 0.0};
-  const McaUnlinkedPair touch(ri, rj, a, r);
+  const McaUnlinkedPair touch(ri, rj, a, r, 3);
   double v[C::NVALUES] = {};
   int word = 0;
   StateTally changes;
@@ -80,7 +80,7 @@ TEST(McaUnlinkedPair, SlidingAtTheCapDissipatesMuSigmaPerDistance)
   double *x[2] = {x0, x1};
   McaPairFrame moved(x, 0, 1);
   moved.orient(ri, rj);
-  const McaUnlinkedPair pressed(ri, rj, a, moved.r);
+  const McaUnlinkedPair pressed(ri, rj, a, moved.r, 3);
   const double before = changes.work[WORK_FRICTION];
   pressed.step(model, word, 0, v, moved, nullptr, a, nullptr, nullptr, 0.0, tally, true, out);
   const double cap = mu * std::fabs(pressed.sigma);
@@ -101,7 +101,7 @@ TEST(McaUnlinkedPair, WeldsPressedAtTheWeldStressIfTheTypesLink)
   const McaPairTally tally{changes, 1.0, nullptr, 0, 1, 20.0, 20.0, true, nullptr};
   McaPairForce out;
   const McaPairFrame p = frame(r, ri, rj);
-  const McaUnlinkedPair touch(ri, rj, a, r);
+  const McaUnlinkedPair touch(ri, rj, a, r, 3);
   for (const bool links : {false, true}) {
     model.links = links;
     double v[C::NVALUES] = {};

@@ -423,16 +423,6 @@ def test_bad_settings(args, message):
             lmp.command(f"pair_style mca {args}")
 
 
-def test_dimension_2_refused():
-    with session() as lmp:
-        lmp.commands_list(["units lj", "dimension 2", "atom_style sphere", "boundary p p p",
-                           "comm_modify vel yes", "region box block -5 5 -5 5 -0.5 0.5",
-                           "create_box 1 box", "create_atoms 1 single 0 0 0",
-                           "pair_style mca fraction 0.6", "pair_coeff 1 1 bulk 1 shear 1"])
-        with pytest.raises(Exception, match="three-dimensional"):
-            lmp.command("run 0")
-
-
 sys.path.insert(0, os.path.join(HERE, "..", "..", "examples", "mca-elastic"))
 import bpm_compare  # noqa: E402
 import pulse  # noqa: E402

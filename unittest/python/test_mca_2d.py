@@ -1,0 +1,290 @@
+"""pair_style mca in dimension 2 (discs of unit thickness, plane strain or plane stress).
+
+Oracles: the closed forms of isotropic plane elasticity on the triangular packing (exact
+there, as on fcc in 3d: Love's identity sum S R n n = Omega I): in plane strain C11 = lambda +
+2G, C12 = lambda, E' = E / (1 - nu^2), nu' = nu / (1 - nu); in plane stress E and nu
+themselves; the wave speeds sqrt((lambda + 2G)/rho), sqrt(E / ((1 - nu^2) rho)) and
+sqrt(G/rho) from the period of a standing wave; an unlinked pair's compression through the
+hexagon's side 2 R / sqrt(3); the dt^2 scaling of velocity Verlet's energy error; serial
+against 2 ranks, newton on and off; a straight run against a restarted one.  Units lj and si."""
+import math
+
+import numpy as np
+import pytest
+from conftest import PLUGIN, run_lmp, session, thermo_rows
+
+TRIANGULAR = math.pi / math.sqrt(12.0)
+# an element radius and Young's modulus of each unit style's order
+SCALE = {"lj": (0.5, 1.0), "si": (1.0e-3, 1.0e9)}
+
+
+def moduli(e, nu):
+    """K, G and Lame's lambda of the 3d material."""
+    g = e / (2.0 * (1.0 + nu))
+    k = e / (3.0 * (1.0 - 2.0 * nu))
+    return k, g, k - 2.0 * g / 3.0
+
+
+def in_plane(e, nu, plane):
+    """C11, C12 of the plane's isotropic stiffness (plane stress: lambda* = 2 G lambda /
+    (lambda + 2 G))."""
+    _, g, lam = moduli(e, nu)
+    if plane == "stress":
+        lam = 2.0 * g * lam / (lam + 2.0 * g)
+    return lam + 2.0 * g, lam
+
+
+def triangular_block(units, plane, nu, nx=6, ny=4, newton="on", extra=()):
+    """A periodic triangular packing of touching discs (density 1/F: element density 1 in
+    reduced units, rho in kg/m^3 of 1 in si)."""
+    r, e = SCALE[units]
+    k, g, _ = moduli(e, nu)
+    a = 2.0 * r
+    lattice = (f"lattice hex {2.0 / (math.sqrt(3.0) * a * a)!r}" if units == "lj" else
+               f"lattice hex {a!r}") + " origin 0.25 0.25 0"    # no element on a box face
+    return [f"units {units}", "dimension 2", "atom_style sphere", "boundary p p p",
+            "comm_modify vel yes", f"newton {newton}", lattice,
+            f"region box block 0 {nx} 0 {ny} -0.5 0.5", "create_box 1 box",
+            "create_atoms 1 box", f"set group all diameter {a!r}",
+            f"set group all density/disc {1.0 / TRIANGULAR!r}", f"neighbor {0.2 * r!r} bin",
+            f"pair_style mca fraction {TRIANGULAR!r} tolerance 0.02 plane {plane}",
+            f"pair_coeff 1 1 bulk {k!r} shear {g!r}", *extra]
+
+
+@pytest.mark.parametrize("units", ["lj", "si"])
+@pytest.mark.parametrize("plane", ["strain", "stress"])
+@pytest.mark.parametrize("nu", [0.1, 0.3, 0.45])
+def test_triangular_packing_moduli(units, plane, nu):
+    """Strains of 1e-4 along x and y in turn: the virial stresses give C11 and C12 of plane
+    strain or plane stress within 1e-3 (the issue asks 3 % for E and 0.02 for nu), and the
+    plane's E and nu from them."""
+    r, e = SCALE[units]
+    eps = 1.0e-4
+    c = []
+    with session() as lmp:
+        lmp.commands_list(triangular_block(units, plane, nu) + [
+            "compute p all pressure NULL virial", "thermo_style custom step c_p[1]", "run 0"])
+        for axis in "xy":
+            lmp.command(f"change_box all {axis} scale {1.0 + eps!r} remap")
+            lmp.command("run 0")
+            p = lmp.numpy.extract_compute("p", 0, 1)
+            c.append([-p[0] / eps, -p[1] / eps])
+            lmp.command(f"change_box all {axis} scale {1.0 / (1.0 + eps)!r} remap")
+        nktv2p = lmp.extract_global("nktv2p")
+    c = np.array(c) / nktv2p
+    c11, c12 = in_plane(e, nu, plane)
+    assert np.allclose(np.diag(c), c11, rtol=1e-3) and np.allclose(c[0, 1], c12, rtol=1e-3), c
+    e2 = (c[0, 0] ** 2 - c[0, 1] ** 2) / c[0, 0]
+    nu2 = c[0, 1] / c[0, 0]
+    want_e, want_nu = (e / (1.0 - nu ** 2), nu / (1.0 - nu)) if plane == "strain" else (e, nu)
+    assert e2 == pytest.approx(want_e, rel=1e-3) and nu2 == pytest.approx(want_nu, abs=1e-3)
+
+
+def standing_wave_speed(units, plane, nu, polarisation, nx=40):
+    """A standing wave u = A sin(2 pi x / L) along a periodic strip of nx elements, started
+    from rest after the links are made: its amplitude goes as cos(c k t), first zero at a
+    quarter period; returns c and the strip's density rho = m / Omega."""
+    r, e = SCALE[units]
+    amp = 1.0e-4 * r
+    with session() as lmp:
+        lmp.commands_list(triangular_block(units, plane, nu, nx=nx, ny=2) + [
+            "fix move all nve/sphere disc", "run 0"])
+        n = lmp.extract_global("nlocal")
+        lx = lmp.extract_global("boxhi")[0] - lmp.extract_global("boxlo")[0]
+        x0 = np.array(lmp.numpy.extract_atom("x")[:n])
+        k = 2.0 * math.pi / lx
+        rho = lmp.numpy.extract_atom("rmass")[0] / (math.pi * r * r / TRIANGULAR)
+        axis = 0 if polarisation == "longitudinal" else 1
+        lmp.command(f"variable u atom {amp!r}*sin({k!r}*x)")
+        lmp.command("displace_atoms all move v_u 0 0" if axis == 0 else
+                    "displace_atoms all move 0 v_u 0")
+        c11, _ = in_plane(e, nu, plane)
+        dt = 0.05 * 2.0 * r / math.sqrt(c11 / rho)    # a twentieth of an element's crossing
+        lmp.command(f"timestep {dt!r}")
+        lmp.command("run 0")
+        history = []
+        t = 0.0
+        while True:
+            x = np.array(lmp.numpy.extract_atom("x")[:n])
+            a = np.sum((x[:, axis] - x0[:, axis]) * np.sin(k * x0[:, 0]))
+            history.append((t, a))
+            if a < 0.0:
+                break
+            lmp.command("run 1 pre no post no")
+            t += dt
+    (t0, a0), (t1, a1) = history[-2:]
+    quarter = t0 + (t1 - t0) * a0 / (a0 - a1)
+    return lx / (4.0 * quarter), rho
+
+
+@pytest.mark.parametrize("units", ["lj", "si"])
+@pytest.mark.parametrize("plane", ["strain", "stress"])
+@pytest.mark.parametrize("polarisation", ["longitudinal", "transverse"])
+def test_wave_speeds(units, plane, polarisation):
+    """The period of the longest standing wave of a 40-element strip: sqrt(C11/rho)
+    (plane strain: (lambda + 2G)/rho; plane stress: E/((1 - nu^2) rho)) and sqrt(G/rho),
+    within 2 %."""
+    r, e = SCALE[units]
+    nu = 0.3
+    c, rho = standing_wave_speed(units, plane, nu, polarisation)
+    _, g, lam = moduli(e, nu)
+    if polarisation == "transverse":
+        want = math.sqrt(g / rho)
+    elif plane == "strain":
+        want = math.sqrt((lam + 2.0 * g) / rho)
+    else:
+        want = math.sqrt(e / ((1.0 - nu * nu) * rho))
+    assert rho == pytest.approx(1.0, rel=1e-12)
+    assert c == pytest.approx(want, rel=0.02)
+
+
+BLOCK_2D = """
+plugin load {plugin}
+units lj
+dimension 2
+atom_style sphere
+boundary p p p
+comm_modify vel yes
+newton {newton}
+lattice hex $(2.0/sqrt(3.0))
+region box block 0 8 0 5 -0.5 0.5
+create_box 1 box
+create_atoms 1 box
+reset_atoms id sort yes
+set group all diameter 1.0
+variable phi equal PI/sqrt(12.0)
+set group all density/disc $(1.0/v_phi)
+pair_style mca fraction ${{phi}} tolerance 0.02 plane strain
+pair_coeff 1 1 young 1.0 poisson 0.3 yield 0.004 strength 0.006 friction 0.3
+displace_atoms all random 0.01 0.01 0 4711 units box
+velocity all create {temp} 4712 loop geom
+neighbor 0.2 bin
+fix move all nve/sphere disc
+fix plane all enforce2d
+compute rot all erotate/sphere
+variable etot equal pe+ke+c_rot
+timestep {dt}
+thermo_style custom step pe ke c_rot v_etot
+thermo_modify norm no format float %.15g
+"""
+
+
+def test_energy_conservation_dt2():
+    """A hot elastic 2d block: translational + rotational + elastic energy, its error falls
+    as dt^2."""
+    spread = []
+    with session() as lmp:
+        for dt in (0.04, 0.02, 0.01):
+            lmp.command("clear")
+            lmp.command(f"plugin load {PLUGIN}")
+            script = BLOCK_2D.format(plugin=PLUGIN, newton="on", dt=dt, temp=1.0e-4)
+            script = script.replace(" yield 0.004 strength 0.006 friction 0.3", "")
+            # the spheres' inertia 2/5 m R^2, which compute erotate/sphere counts
+            script = script.replace("nve/sphere disc", "nve/sphere")
+            lmp.commands_string(script.replace(f"plugin load {PLUGIN}\n", ""))
+            lmp.command("run 0")
+            e0 = lmp.extract_variable("etot")
+            worst = 0.0
+            for _ in range(20):
+                lmp.command(f"run {int(round(0.4 / dt))} pre no post no")
+                worst = max(worst, abs(lmp.extract_variable("etot") - e0))
+            spread.append(worst / e0)
+    assert spread[0] < 1e-2
+    for coarse, fine in zip(spread, spread[1:]):
+        assert 3.0 < coarse / fine < 5.5, spread
+
+
+def final(out_dir):
+    data = np.loadtxt(out_dir / "final.txt", skiprows=9)
+    return data[np.argsort(data[:, 0])]
+
+
+# hot enough that links yield, break and rub (pvector: broken links, plastic and friction work)
+HOT = "compute pw all pair mca\nthermo 100\nthermo_style custom step pe c_pw[1] c_pw[5] c_pw[6]\n"
+DUMP = ("write_dump all custom final.txt id xu yu zu omegaz modify sort id "
+        "format float %.17g\n")
+
+
+@pytest.mark.parametrize("newton", ["on", "off"])
+def test_two_ranks_give_the_serial_run(tmp_path, newton):
+    """A hot block whose links yield, break and rub: 2 ranks give the positions and spins of
+    the serial newton-on run to 1e-10."""
+    ref, par = tmp_path / "ref", tmp_path / "par"
+    ref.mkdir()
+    par.mkdir()
+    out = run_lmp(ref, BLOCK_2D.format(plugin=PLUGIN, newton="on", dt=0.02, temp=3.0e-3) + HOT +
+                  "run 800\n" + DUMP)
+    run_lmp(par, BLOCK_2D.format(plugin=PLUGIN, newton=newton, dt=0.02, temp=3.0e-3) + HOT +
+            "run 800\n" + DUMP, nprocs=2)
+    broken, plastic, friction = thermo_rows(out)[-1][2:]
+    assert broken > 1 and plastic > 0.0 and friction > 0.0
+    a, b = final(ref), final(par)
+    assert np.abs(a[:, 3]).max() == 0.0    # in the plane
+    assert np.abs(a[:, 1:3] - b[:, 1:3]).max() < 1e-10
+    assert np.abs(a[:, 4] - b[:, 4]).max() <= 1e-10 * np.abs(a[:, 4]).max()
+
+
+def test_restart_continues_bit_identically(tmp_path):
+    """write_restart after 400 steps, read_restart, 400 more: the same bits as one session
+    (the plane and every pair's state travel)."""
+    head = BLOCK_2D.format(plugin=PLUGIN, newton="on", dt=0.02, temp=3.0e-3)
+    run_lmp(tmp_path, head + "run 400\nrun 400\n" + DUMP, name="in.straight")
+    straight = final(tmp_path)
+    run_lmp(tmp_path, head + "run 400\nwrite_restart half.rst\n", name="in.first")
+    run_lmp(tmp_path, f"plugin load {PLUGIN}\nread_restart half.rst\ncomm_modify vel yes\n"
+            "neighbor 0.2 bin\nfix move all nve/sphere disc\nfix plane all enforce2d\n"
+            "timestep 0.02\nrun 400\n" + DUMP, name="in.second")
+    assert np.array_equal(straight, final(tmp_path))
+
+
+def test_unlinked_pair_pushes_through_the_hexagon_side():
+    """Two discs apart at the setup: no link; pushed together by 0.05 they repel with
+    S_u a (r - 2R), S_u = 2 R / sqrt(3) (times the unit thickness), a = G / R."""
+    r, g = 0.5, 0.4
+    with session() as lmp:
+        lmp.commands_list([
+            "units lj", "dimension 2", "atom_style sphere", "boundary p p p",
+            "comm_modify vel yes", "region box block -5 5 -5 5 -0.5 0.5", "create_box 1 box",
+            "create_atoms 1 single 0 0 0", "create_atoms 1 single 1.1 0 0",
+            "set group all diameter 1.0", "neighbor 0.2 bin",
+            "pair_style mca fraction 0.9 plane stress", f"pair_coeff 1 1 bulk 1.0 shear {g}",
+            "run 0", "group two id 2", "displace_atoms two move -0.15 0 0 units box",
+            "run 0"])
+        f = lmp.numpy.extract_atom("f")[:2]
+        assert f[0, 0] == pytest.approx(2.0 * r / math.sqrt(3.0) * (g / r) * (-0.05), rel=1e-9)
+        assert f[0, 0] == pytest.approx(-f[1, 0], rel=1e-12) and f[0, 1] == 0.0
+
+
+BOX_2D = ["units lj", "dimension 2", "atom_style sphere", "boundary p p p", "comm_modify vel yes",
+          "region box block -5 5 -5 5 -0.5 0.5", "create_box 1 box", "create_atoms 1 single 0 0 0",
+          "set group all diameter 1.0"]
+
+
+@pytest.mark.parametrize("dim,style,coeff,message", [
+    (2, "pair_style mca fraction 0.9", "pair_coeff 1 1 bulk 1 shear 1",
+     "dimension 2 needs 'plane strain' or 'plane stress'"),
+    (3, "pair_style mca fraction 0.7 plane strain", "pair_coeff 1 1 bulk 1 shear 1",
+     "plane strain|stress is for dimension 2"),
+    (2, "pair_style mca fraction 0.9 plane stress", "pair_coeff 1 1 shock 2.7 5.3 1.3 2 shear 1",
+     "shock equation of state (pair_coeff ... shock) is three-dimensional"),
+])
+def test_dimension_errors(dim, style, coeff, message):
+    with session() as lmp:
+        cmds = list(BOX_2D) if dim == 2 else [c for c in BOX_2D if c != "dimension 2"]
+        if dim == 3:
+            cmds = [c.replace("-0.5 0.5", "-5 5") for c in cmds]
+        lmp.commands_list(cmds + [style, coeff])
+        with pytest.raises(Exception, match=message.replace("(", r"\(").replace(")", r"\)")
+                           .replace("|", r"\|").replace(".", r"\.")):
+            lmp.command("run 0")
+
+
+@pytest.mark.parametrize("args,message", [
+    ("fraction 0.9 plane flat", "plane must be strain or stress (got 'flat')"),
+    ("fraction 0.9 plane", "plane needs a value"),
+])
+def test_plane_keyword_errors(args, message):
+    with session() as lmp:
+        lmp.commands_list(BOX_2D[:7])
+        with pytest.raises(Exception, match=message.replace("(", r"\(").replace(")", r"\)")):
+            lmp.command(f"pair_style mca {args}")
