@@ -33,7 +33,8 @@ namespace ClusterDyn {
     int plane = NONE;
 
     static constexpr double REACH = 1.25;    // neighbour cutoff / linking distance
-    // the layout of a restart: these settings' (1000: with plane) and a pair's state
+    // the layout of a restart: these settings' (1000: with plane and contact segments) and a
+    // pair's state
     static constexpr int LAYOUT = 1000 + McaContact::NVALUES;
 
     static McaSettings parse(LAMMPS *lmp, int narg, char **arg)

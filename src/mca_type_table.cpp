@@ -75,14 +75,14 @@ bool McaTypeTable::responds() const
   return false;
 }
 
-void McaTypeTable::make_model(int itype, int jtype)
+void McaTypeTable::make_model(int itype, int jtype, bool apart)
 {
   for (const int t : {itype, jtype})
     if (!material_set[t])
       error->all(FLERR, "Pair mca: no material for atom type {}: give pair_coeff {} {} bulk K "
                  "shear G (or young E poisson nu)", t, t, t);
   const McaPairModel m =
-      McaPairModel::of_types(in_energy[itype], in_energy[jtype], links(itype, jtype));
+      McaPairModel::of_types(in_energy[itype], in_energy[jtype], links(itype, jtype) && !apart);
   models[itype * (ntypes + 1) + jtype] = models[jtype * (ntypes + 1) + itype] = m;
 }
 
@@ -121,13 +121,10 @@ void McaTypeTable::write_data(FILE *fp) const
                        "the keyword pair ij", i, j);
 }
 
-void McaTypeTable::write_data_all(FILE *fp) const
+void McaTypeTable::write_data_line(FILE *fp, int i, int j) const
 {
-  for (int i = 1; i <= ntypes; i++)
-    for (int j = i; j <= ntypes; j++) {
-      if (i == j)
-        fmt::print(fp, "{} {} {}{}\n", i, i, material[i].words(), links(i, i) ? "" : " link no");
-      else
-        fmt::print(fp, "{} {} link {}\n", i, j, links(i, j) ? "yes" : "no");
-    }
+  if (i == j)
+    fmt::print(fp, "{} {} {}{}\n", i, i, material[i].words(), links(i, i) ? "" : " link no");
+  else
+    fmt::print(fp, "{} {} link {}\n", i, j, links(i, j) ? "yes" : "no");
 }

@@ -30,8 +30,9 @@ namespace ClusterDyn {
     // init_style(): the materials in energy/volume (pressure / nktv2p), in plane stress with
     // its in-plane lambda
     void init(bool plane_stress);
-    // init_one(): the type pair's model, both orders (an error names a type without material)
-    void make_model(int itype, int jtype);
+    // init_one(): the type pair's model, both orders (an error names a type without material);
+    // apart: the types never link (they meet by contact segments)
+    void make_model(int itype, int jtype, bool apart);
     const McaPairModel &model(int itype, int jtype) const
     {
       return models[itype * (ntypes + 1) + jtype];
@@ -46,7 +47,7 @@ namespace ClusterDyn {
     void write_restart(FILE *) const;
     void read_restart(FILE *);    // after allocate()
     void write_data(FILE *) const;
-    void write_data_all(FILE *) const;
+    void write_data_line(FILE *, int itype, int jtype) const;
 
    private:
     int ntypes = 0;

@@ -23,6 +23,7 @@
 #include "error.h"
 #include "force.h"
 #include "memory.h"
+#include "neigh_request.h"
 #include "neighbor.h"
 #include "update.h"
 
@@ -37,7 +38,7 @@ using C = McaContact;
 
 PairMCA::PairMCA(LAMMPS *lmp) :
     PairColumnExchange(lmp), types(lmp), guard(lmp), plasticity(lmp, *this), manybody(lmp, *this), stress(lmp, *this),
-    eos(lmp, *this), state(lmp, this, "Pair mca", C::NVALUES, NWORK), tracks_changes(false), linking(lmp, *this),
+    eos(lmp, *this), state(lmp, this, "Pair mca", C::NVALUES, NWORK), tracks_changes(false), linking(lmp, *this), segments(lmp), full(nullptr),
     stiffness(nullptr), hourglass(nullptr), nmax(0)
 {
   single_enable = 0;
@@ -104,6 +105,8 @@ void PairMCA::compute(int eflag, int vflag)
   if (plasticity.active()) plastic_trial(pass);
   StateTally changes;
   pair_forces(pass, changes);
+  if (segments.active())
+    segments.compute(full, stiffness, setting.tolerance, elements_turn(), update->dt, changes, *this);
   if (tracks_changes)
     manybody.tally_changes(changes, WORK_DAMAGE, WORK_PLASTIC, eos.active() ? &eos : nullptr);
   if (eos.active()) eos.finish_heat();
@@ -209,7 +212,7 @@ void PairMCA::pair_forces(const StatePass &pass, StateTally &changes)
     McaPairFrame p(atom->x, i, j);
     int &word = pass.words[i][jj];
     const int linked = state_now(word);
-    if (!linked && p.rsq >= (ri + rj) * (ri + rj)) {
+    if (!linked && (p.rsq >= (ri + rj) * (ri + rj) || segments.between(atom->type[i], atom->type[j]))) {
       word = kept_word(word, false);    // an open contact keeps nothing
       return;
     }
@@ -335,13 +338,16 @@ void PairMCA::allocate()
   for (int i = 1; i < np1; i++)
     for (int j = i; j < np1; j++) setflag[i][j] = 1;
   types.allocate();
+  segments.allocate(atom->ntypes);
 }
 
-// pair_coeff I I bulk K shear G ... | I J link yes|no (mca_type_table.h)
+// pair_coeff I I bulk K shear G ... | I J link yes|no (mca_type_table.h) | I J segments ...
+// (mca_segment_contact.h)
 void PairMCA::coeff(int narg, char **arg)
 {
   if (!allocated) allocate();
-  types.coeff(narg, arg);
+  if (narg >= 3 && strcmp(arg[2], "segments") == 0) segments.coeff(narg, arg);
+  else types.coeff(narg, arg);
 }
 
 void PairMCA::init_style()
@@ -365,7 +371,9 @@ void PairMCA::init_style()
                "through a run; minimize cannot move it (use the linear law, bulk K)");
   stress.init(setting.fraction);
   plasticity.init(types.as_given(), setting.plane == McaSettings::STRAIN);
+  segments.init();
   neighbor->add_request(this, NeighConst::REQ_HISTORY);
+  if (segments.active()) neighbor->add_request(this, NeighConst::REQ_FULL)->set_id(1);
   state.init();
 }
 
@@ -373,14 +381,22 @@ void PairMCA::init_style()
 // pair's model, and its cutoff from the largest elements of the two types
 double PairMCA::init_one(int i, int j)
 {
-  types.make_model(i, j);
-  const double cut = McaSettings::REACH * (1.0 + setting.tolerance) *
-                     (guard.largest_radius(i) + guard.largest_radius(j));
+  types.make_model(i, j, segments.between(i, j));
+  const double cut = fmax(McaSettings::REACH * (1.0 + setting.tolerance) *
+                              (guard.largest_radius(i) + guard.largest_radius(j)),
+                          segments.cutoff(i, j, guard.largest_radius(i), guard.largest_radius(j),
+                                          setting.tolerance));
   if (i == j && cut > 0.0) check_neighbor_skin(lmp, cut, "Pair mca");
   return cut;
 }
 
 /* ---------------------------------------------------------------------- */
+
+void PairMCA::init_list(int id, NeighList *ptr)
+{
+  if (id == 1) full = ptr;
+  else list = ptr;
+}
 
 void PairMCA::transfer_history(double *source, double *target, int, int)
 {
@@ -401,6 +417,7 @@ void PairMCA::write_restart(FILE *fp)
 {
   write_restart_settings(fp);
   types.write_restart(fp);
+  segments.write_restart(fp);
 }
 
 void PairMCA::read_restart(FILE *fp)
@@ -408,6 +425,7 @@ void PairMCA::read_restart(FILE *fp)
   read_restart_settings(fp);
   allocate();
   types.read_restart(fp);    // into the table allocate() made
+  segments.read_restart(fp);
 }
 
 void PairMCA::write_restart_settings(FILE *fp)
@@ -421,6 +439,15 @@ void PairMCA::read_restart_settings(FILE *fp)
   setting.read_restart(fp, lmp);
   state.enable();
   state.read_restart(fp);
+}
+
+// one line per type pair: the segment law where two types meet by segments, else the material
+// or the link flag
+void PairMCA::write_data_all(FILE *fp)
+{
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++)
+      if (!segments.write_data_line(fp, i, j)) types.write_data_line(fp, i, j);
 }
 
 double PairMCA::memory_usage()

@@ -32,6 +32,7 @@ PairStyle(mca,PairMCA);
 #include "mca_manybody.h"
 #include "mca_pair_walk.h"
 #include "mca_plasticity.h"
+#include "mca_segment_contact.h"
 #include "mca_settings.h"
 #include "mca_type_table.h"
 #include "pair_column_exchange.h"
@@ -54,7 +55,8 @@ namespace ClusterDyn {
     void write_restart_settings(FILE *) override;
     void read_restart_settings(FILE *) override;
     void write_data(FILE *fp) override { types.write_data(fp); }
-    void write_data_all(FILE *fp) override { types.write_data_all(fp); }
+    void write_data_all(FILE *fp) override;
+    void init_list(int id, NeighList *ptr) override;
     void transfer_history(double *, double *, int, int) override;
     void *extract(const char *, int &) override;
     double memory_usage() override;
@@ -75,6 +77,8 @@ namespace ClusterDyn {
     PairState state;
     bool tracks_changes;                  // the many-body term follows breaking, damage, flow
     McaLinking linking;
+    McaSegmentContact segments;           // two bodies' contact by the method of segments (2d)
+    NeighList *full;                      // its full list (id 1)
     double *stiffness;                    // per atom: the half stiffness a_i = 2 G_i / R_i
     double **hourglass;                   // and of its hourglass spring: 2 H (K + 4G/3) / R_i,
                                           // and 4 H / R_i per unit pressure

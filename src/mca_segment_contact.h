@@ -1,0 +1,85 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   Cluster-dynamics plugin for LAMMPS: the contact of two bodies of
+   movable cellular automata by the method of segments (dimension 2), for
+   pairs of element types given as
+     pair_coeff I J segments mu0 [viscous eta0] [limit sigma0]
+                [roughness A1 l1 d1 A2 l2 d2 seed]
+   Elements of type I, the lower of the two (LAMMPS's pair_coeff puts the
+   lower type first), make the surface: any two of them in contact
+   (closer than (1 + T)(R_i + R_j)) are a segment, and the segments form
+   the polyline of their centres.  An element k of type J meets the
+   polyline at its nearest point (McaSegmentLaw): normal force, friction
+   with the micro-roughness K_mu of the point's x (McaRoughness), shared
+   between the segment's two elements.  Elements of types I and J do not
+   link and have no other contact.  Each element k keeps its tangential
+   spring xi in fix property/atom d_mca_slip (it moves with k and goes into
+   restart files).  Needs newton on: the forces on ghost elements of the
+   surface are summed onto their owners.  Formulas: doc/pair_mca.rst.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_CLUSTERDYN_MCA_SEGMENT_CONTACT_H
+#define LMP_CLUSTERDYN_MCA_SEGMENT_CONTACT_H
+
+#include "mca_roughness.h"
+#include "mca_segment_law.h"
+
+#include "pair_state.h"
+#include "pointers.h"
+
+#include <cstdio>
+#include <vector>
+
+namespace LAMMPS_NS {
+class NeighList;
+class Pair;
+namespace ClusterDyn {
+
+  class McaSegmentContact : protected Pointers {
+   public:
+    static constexpr const char *FIX_ID = "MCA_SEGMENT_SLIP";
+    static constexpr const char *NAME = "mca_slip";
+
+    explicit McaSegmentContact(LAMMPS *lmp) : Pointers(lmp) {}
+    void allocate(int ntypes);
+    // pair_coeff I J segments ... (arg: all of pair_coeff's words)
+    void coeff(int narg, char **arg);
+    bool active() const { return any; }
+    // types it and jt meet by segments (either order)
+    bool between(int it, int jt) const { return side[index(it, jt)] != 0 || side[index(jt, it)] != 0; }
+    // init_style(): the checks, the state, the roughness profiles over the box
+    void init();
+    // the cutoff a segment type pair needs (largest radii of the types; 0: not one)
+    double cutoff(int it, int jt, double ri, double rj, double tolerance) const;
+    // the forces of every element k on the surfaces it meets; stiffness: a_i = 2 G_i / R_i;
+    // moving: a step of dynamics (the springs slide); the friction's work into changes
+    void compute(const NeighList *full, const double *stiffness, double tolerance, bool moving,
+                 double dt, StateTally &changes, Pair &pair);
+    void write_restart(FILE *) const;
+    void read_restart(FILE *);
+    // the pair_coeff line of types i and j (either order) for write_data pair ij; false: none
+    bool write_data_line(FILE *, int i, int j) const;
+
+   private:
+    struct Given {
+      double mu0 = 0.0, eta0 = 0.0, sigma0 = 0.0;
+      McaRoughness::Wave waves[2];
+      int seed = 0;
+    };
+    enum { NGIVEN = 10 };
+    int ntypes = 0;
+    bool any = false;
+    std::vector<int> side;          // (I, J): 1 where I's segments meet J's elements
+    std::vector<Given> given;       // as pair_coeff gave them (pressure units)
+    std::vector<McaSegmentLaw> law; // in energy/volume
+    std::vector<McaRoughness> rough;
+
+    int index(int it, int jt) const { return it * (ntypes + 1) + jt; }
+    double *slip() const;
+    static void pack(const Given &g, double *v);
+    static void unpack(const double *v, Given &g);
+  };
+
+}    // namespace ClusterDyn
+}    // namespace LAMMPS_NS
+
+#endif
