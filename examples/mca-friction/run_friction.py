@@ -74,12 +74,16 @@ def steady(rows):
     return rows[col(rows, "xd") > TRANSIENT]
 
 
-def top_row(dump):
-    """The substrate's top row: x, y sorted by x (the elements within 0.3 of the highest)."""
-    x, y = dump[:, 1], dump[:, 2]
-    top = y > y.max() - 0.3 if y.size else y
-    order = np.argsort(x[top])
-    return x[top][order], y[top][order]
+def top_row(before, after):
+    """The substrate's top row (the elements within 0.3 of the highest before sliding): x, y
+    before and after, each sorted by x, and how many of them rose more than 0.5 (torn off)."""
+    top = before[:, 2] > before[:, 2].max() - 0.3
+    ids = before[top, 0]
+    now = after[np.isin(after[:, 0], ids)]
+    b = before[top][np.argsort(before[top, 1])]
+    a = now[np.argsort(now[:, 1])]
+    torn = int((a[:, 2] > b[:, 2].max() + 0.5).sum())
+    return (b[:, 1], b[:, 2]), (a[:, 1], a[:, 2]), torn
 
 
 def measure(name, rows):
@@ -134,13 +138,13 @@ def main():
     a.legend(fontsize=8)
     a = ax[1, 1]
     dumps = results["damage"][1]
-    for which in ("before", "after"):
-        if which in dumps:
-            x, y = top_row(dumps[which])
-            a.plot(x, y, ".-", ms=3, lw=0.7, label=which)
-    a.set(xlabel="x", ylabel="y of the substrate's top row",
-          title=f"(d) the surface under load 0.5, sigma_c = 0.01: "
-                f"{table['damage']['broken']:.0f} links broken")
+    (xb, yb), (xa, ya), torn = top_row(dumps["before"], dumps["after"])
+    a.plot(xb, yb, ".-", ms=3, lw=0.7, label="before (under the load)")
+    a.plot(xa, ya, ".-", ms=3, lw=0.7, label="after")
+    a.set(xlabel="x", ylabel="y of the substrate's top row elements",
+          title=f"(d) load 0.5, sigma_c = 0.01: {table['damage']['broken']:.0f} links broken, "
+                f"{torn} torn off")
+    table["damage"]["torn"] = torn
     a.legend(fontsize=8)
     fig.tight_layout()
     fig.savefig(os.path.join(HERE, "friction.png"), dpi=110)
@@ -165,7 +169,9 @@ def main():
               f"Element size: sd of mu, diameter 2 / diameter 1 = "
               f"{table['diameter 2']['mu_sd'] / table['load 0.05']['mu_sd']:.3f}.",
               f"Stick-slip: spring force max - min, soft / stiff = "
-              f"{table['soft spring']['fs_pp'] / table['load 0.05']['fs_pp']:.2f}."]
+              f"{table['soft spring']['fs_pp'] / table['load 0.05']['fs_pp']:.2f}.",
+              f"Damage: {table['damage']['torn']} elements of the top row torn off (risen more "
+              f"than 0.5 above it)."]
     with open(os.path.join(HERE, "friction.md"), "w") as out:
         out.write("\n".join(lines) + "\n")
     print("\n".join(lines))
