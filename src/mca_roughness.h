@@ -4,18 +4,18 @@
    spline_laws.h): the review's eq 18 (Psakhie et al., Chebyshevskii
    Sbornik 18(3), 2017, section 7), two piecewise sinusoids about 1,
        K_mu(x) = 1 + sum_m A_mp sin(pi (x - x_mp) / l_m),  x in piece p
-   each sinusoid m made of regular pieces: a piece has n_p half-waves of
-   the half-period l_m (n_p a random integer of mean d_m / l_m: the
-   regularity d_m is the mean length of a regular piece) and its own
+   each sinusoid m made of regular pieces: a piece has n_p whole periods
+   2 l_m (l_m the half-period; n_p a random integer of mean d_m / (2 l_m):
+   the regularity d_m is the mean length of a regular piece) and its own
    amplitude A_mp, uniform in [A_m / 2, 3 A_m / 2], with a random sign;
-   every piece starts and ends at a zero, so K_mu is continuous.  Laid over
-   [x0, x0 + L) of the box's x axis (periodic: the last piece of each
-   sinusoid fills the rest with whole half-waves of a stretched half-
-   period).  An element's contact of length S reads the mean of K_mu over
-   it, (Phi(x + S/2) - Phi(x - S/2)) / S with Phi the exact antiderivative:
-   a sinusoid's swing falls as sin(pi S / 2 l) / (pi S / 2 l) once S is
-   beyond its half-period, the review's fall of the oscillation with the
-   element's size.  The random numbers are Park and Miller's minimal
+   every piece starts and ends at a zero, so K_mu is continuous, and its
+   mean over every piece is 1.  Laid over [x0, x0 + L) of the box's x axis
+   (periodic: the last piece of each sinusoid fills the rest with whole
+   periods, stretched).  An element's contact of length S reads the mean
+   of K_mu over it, (Phi(x + S/2) - Phi(x - S/2)) / S with Phi the exact
+   antiderivative: a sinusoid's swing falls as sin(pi S / 2 l) / (pi S /
+   2 l) once S is beyond its half-period, and to zero as S grows past the
+   pieces, the review's fall of the oscillation with the element's size.  The random numbers are Park and Miller's minimal
    standard (LAMMPS's RanPark), the same on every rank and machine.
 ------------------------------------------------------------------------- */
 
@@ -65,7 +65,7 @@ namespace ClusterDyn {
 
    private:
     struct Piece {
-      double start, half_period, amplitude, before;    // before: the integral up to start
+      double start, half_period, amplitude;
     };
     double x0 = 0.0, length = 1.0;
     std::vector<Piece> pieces[2];
@@ -84,21 +84,20 @@ namespace ClusterDyn {
     {
       out.clear();
       if (!(w.amplitude > 0.0)) return;
-      const double mean_waves = w.regularity / w.half_period;    // >= 1
-      double at = 0.0, before = 0.0;
+      const double mean_periods = 0.5 * w.regularity / w.half_period;    // >= 1
+      double at = 0.0;
       while (at < length) {
-        int n = 1 + static_cast<int>(uniform(state) * (2.0 * mean_waves - 1.0));
+        int n = 1 + static_cast<int>(uniform(state) * (2.0 * mean_periods - 1.0));
         const double sign = uniform(state) < 0.5 ? -1.0 : 1.0;
         const double amp = sign * w.amplitude * (0.5 + uniform(state));
         double half = w.half_period;
-        if (at + (n + 1) * half > length) {    // the last piece fills the rest
-          n = static_cast<int>(floor((length - at) / half + 0.5));
+        if (at + 2.0 * (n + 1) * half > length) {    // the last piece fills the rest
+          n = static_cast<int>(floor((length - at) / (2.0 * half) + 0.5));
           if (n < 1) n = 1;
-          half = (length - at) / n;
+          half = (length - at) / (2.0 * n);
         }
-        out.push_back({at, half, amp, before});
-        before += n % 2 ? 2.0 * amp * half / M_PI : 0.0;
-        at += n * half;
+        out.push_back({at, half, amp});
+        at += 2.0 * n * half;
       }
     }
 
@@ -120,27 +119,17 @@ namespace ClusterDyn {
       return u;
     }
 
-    // the integral of K_mu from x0 to x (any x: whole lengths add the whole integral)
+    // the integral of K_mu - 1 from x0 to x plus x - x0 (any x: every piece adds nothing whole)
     double integral(double x) const
     {
-      const double turns = floor((x - x0) / length);
-      const double u = x - x0 - turns * length;
-      double whole = length, part = u;
+      double part = x - x0;
+      const double u = wrapped(x);
       for (const auto &sine : pieces) {
         if (sine.empty()) continue;
-        whole += total(sine);
         const Piece &p = sine[find(sine, u)];
-        part += p.before +
-            p.amplitude * p.half_period / M_PI * (1.0 - cos(M_PI * (u - p.start) / p.half_period));
+        part += p.amplitude * p.half_period / M_PI * (1.0 - cos(M_PI * (u - p.start) / p.half_period));
       }
-      return turns * whole + part;
-    }
-
-    double total(const std::vector<Piece> &sine) const
-    {
-      const Piece &p = sine.back();
-      const double n = floor((length - p.start) / p.half_period + 0.5);
-      return p.before + (static_cast<long>(n) % 2 ? 2.0 * p.amplitude * p.half_period / M_PI : 0.0);
+      return part;
     }
   };
 

@@ -84,9 +84,9 @@ void McaSegmentContact::coeff(int narg, char **arg)
         if (w.amplitude < 0.0)
           error->all(FLERR, "{}: roughness amplitude {} must be >= 0 (got {})", who, m + 1,
                      arg[i + 1 + 3 * m]);
-        if (w.regularity < w.half_period)
-          error->all(FLERR, "{}: roughness regularity {} ({}) must be at least its half-period "
-                     "({}): a regular piece holds whole half-waves", who, m + 1,
+        if (w.regularity < 2.0 * w.half_period)
+          error->all(FLERR, "{}: roughness regularity {} ({}) must be at least its period, twice "
+                     "the half-period {}: a regular piece holds whole periods", who, m + 1,
                      arg[i + 3 + 3 * m], arg[i + 2 + 3 * m]);
       }
       if (1.5 * (g.waves[0].amplitude + g.waves[1].amplitude) >= 1.0)
