@@ -64,6 +64,7 @@ void ComputeMcaAtom::compute_peratom()
     for (int k = 0; k < NCOLUMNS; k++) v[k] = 0.0;
     if (!(mask[i] & groupbit)) continue;
     for (int k = 0; k < 6; k++) v[k] = s[i][k];
+    if (domain->dimension == 2) v[SZZ] = pair->out_of_plane_stress(i, v[SXX], v[SYY]);
     v[MEAN] = (v[SXX] + v[SYY] + v[SZZ]) / 3.0;
     const double dxx = v[SXX] - v[MEAN], dyy = v[SYY] - v[MEAN], dzz = v[SZZ] - v[MEAN];
     v[EQUIVALENT] = sqrt(1.5 * (dxx * dxx + dyy * dyy + dzz * dzz) +

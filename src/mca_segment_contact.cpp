@@ -164,7 +164,8 @@ double McaSegmentContact::cutoff(int it, int jt, double ri, double rj, double to
 ------------------------------------------------------------------------- */
 
 void McaSegmentContact::compute(const NeighList *full, const double *stiffness, double tolerance,
-                                bool moving, double dt, StateTally &changes, Pair &pair)
+                                bool moving, double dt, StateTally &changes, Pair &pair,
+                                McaElementStress *love)
 {
   double **x = atom->x, **v = atom->v, **omega = atom->omega, **f = atom->f;
   double **torque = atom->torque;
@@ -245,6 +246,19 @@ void McaSegmentContact::compute(const NeighList *full, const double *stiffness, 
     torque[k][2] -= rk * ft;
     torque[bi][2] -= (1.0 - t) * (h - rk) * ft;
     torque[bj][2] -= t * (h - rk) * ft;
+    if (love) {
+      const double c[3] = {x[k][0] - rk * n[0], x[k][1] - rk * n[1], x[k][2]};
+      const double fi[3] = {-(1.0 - t) * fk[0], -(1.0 - t) * fk[1], 0.0};
+      const int who[3] = {k, bi, bj};
+      const double *force[3] = {fk, bi == bj ? fk : fi, fj};
+      for (int m = 0; m < (bi == bj ? 2 : 3); m++) {
+        const int e = who[m];
+        double arm[3] = {c[0] - x[e][0], c[1] - x[e][1], 0.0}, f3[3], sym[6];
+        for (int q = 0; q < 3; q++) f3[q] = (bi == bj && m == 1) ? -force[m][q] : force[m][q];
+        McaElement::dyad(arm, f3, sym);
+        love->add(e, 1.0, sym, 0);
+      }
+    }
     if (pair.evflag) {
       double dji[3] = {x[bj][0] - x[bi][0], x[bj][1] - x[bi][1], 0.0};
       double dki[3] = {x[k][0] - x[bi][0], x[k][1] - x[bi][1], 0.0};

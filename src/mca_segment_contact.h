@@ -20,6 +20,7 @@
 #ifndef LMP_CLUSTERDYN_MCA_SEGMENT_CONTACT_H
 #define LMP_CLUSTERDYN_MCA_SEGMENT_CONTACT_H
 
+#include "mca_element_stress.h"
 #include "mca_roughness.h"
 #include "mca_segment_law.h"
 
@@ -52,8 +53,10 @@ namespace ClusterDyn {
     double cutoff(int it, int jt, double ri, double rj, double tolerance) const;
     // the forces of every element k on the surfaces it meets; stiffness: a_i = 2 G_i / R_i;
     // moving: a step of dynamics (the springs slide); the friction's work into changes
+    // (love: the elements' stresses, null where not wanted: each of the three takes
+    // sym((c - x) (x) F) of its force F, c the contact point on k's surface)
     void compute(const NeighList *full, const double *stiffness, double tolerance, bool moving,
-                 double dt, StateTally &changes, Pair &pair);
+                 double dt, StateTally &changes, Pair &pair, McaElementStress *love);
     void write_restart(FILE *) const;
     void read_restart(FILE *);
     // the pair_coeff line of types i and j (either order) for write_data pair ij; false: none

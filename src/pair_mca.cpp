@@ -106,7 +106,9 @@ void PairMCA::compute(int eflag, int vflag)
   StateTally changes;
   pair_forces(pass, changes);
   if (segments.active())
-    segments.compute(full, stiffness, setting.tolerance, elements_turn(), update->dt, changes, *this);
+    segments.compute(full, stiffness, setting.tolerance, elements_turn(), update->dt, changes,
+                     *this, stress.wanted() ? &stress : nullptr);
+  if (stress.wanted()) stress.to_owners(true);
   if (tracks_changes)
     manybody.tally_changes(changes, WORK_DAMAGE, WORK_PLASTIC, eos.active() ? &eos : nullptr);
   if (eos.active()) eos.finish_heat();
@@ -269,7 +271,6 @@ void PairMCA::pair_forces(const StatePass &pass, StateTally &changes)
       if (jown) stress.add(j, p.qj, sym, linked);
     }
   });
-  if (stress.wanted()) stress.to_owners(true);
 }
 
 // a linked pair's effective normal stress at this step (before any return), returned, and its

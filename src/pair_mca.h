@@ -38,6 +38,8 @@ PairStyle(mca,PairMCA);
 #include "pair_column_exchange.h"
 #include "pair_state.h"
 
+#include "atom.h"
+
 namespace LAMMPS_NS {
 namespace ClusterDyn {
 
@@ -65,6 +67,13 @@ namespace ClusterDyn {
     void request_element_stress() { stress.request(); }
     double **element_stress() const { return stress.current(); }
     double packing_fraction() const { return setting.fraction; }
+    // 2d: an element's sigma_zz from its in-plane stresses (plane strain: nu (sxx + syy), the
+    // elastic state; plane stress: 0)
+    double out_of_plane_stress(int i, double sxx, double syy) const
+    {
+      if (setting.plane != McaSettings::STRAIN) return 0.0;
+      return types.as_given()[atom->type[i]].poisson() * (sxx + syy);
+    }
 
    private:
     McaSettings setting;

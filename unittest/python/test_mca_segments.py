@@ -348,3 +348,40 @@ def test_write_data_keeps_the_segments(tmp_path):
                            "pair_style mca fraction 0.9068996821171089 tolerance 0.02 plane strain",
                            f"read_data {tmp_path / 'seg.data'}", "neighbor 0.15 bin", "run 0"])
         assert np.allclose(arrays(lmp)[1], f0, rtol=1e-12, atol=1e-15)
+
+
+@pytest.mark.parametrize("units", ["lj", "si"])
+def test_element_stresses_carry_the_segment_forces(units):
+    """compute mca/atom gives each of k, i and j the share sym((c - x) (x) F) of its segment
+    force (c the contact point on k): summed with the pairs' over the elements, sigma Omega is
+    LAMMPS's virial -P V on the diagonal, and off it the symmetric part -(P_xy V - sum of the
+    torques / 2) (LAMMPS sums x f_y only; x f_y - y f_x is minus the torques) (two elements
+    pressed and sliding: normal and friction forces)."""
+    r, _ = SCALE[units]
+    with session() as lmp:
+        scene(lmp, units, [])
+        y0 = row_top(lmp)
+    points = [(2.0 * r * 2.3, y0 + 1.6 * r), (2.0 * r * 5.05, y0 + 1.55 * r)]
+    with session() as lmp:
+        scene(lmp, units, points, more=["compute s all mca/atom",
+                                         "compute p all pressure NULL virial",
+                                         "thermo_style custom step c_p[1] c_p[2] c_p[4]",
+                                         "group pts type 2", "velocity pts set 0.05 0 0 units box",
+                                         "fix move all nve/sphere disc",
+                                         f"timestep {0.002 * r / SCALE[units][0]!r}"])
+        if units == "si":
+            lmp.command("velocity pts set 5.0 0 0 units box")
+            lmp.command("timestep 1.0e-9")
+        lmp.command("run 20")
+        n = lmp.extract_global("nlocal")
+        s = np.array(lmp.numpy.extract_compute("s", 1, 2)[:n])
+        p = np.array(lmp.numpy.extract_compute("p", 0, 1))
+        box = lmp.extract_box()
+        spin = np.array(lmp.numpy.extract_atom("torque")[:n])[:, 2].sum()
+        nktv2p = lmp.extract_global("nktv2p")
+        area = (box[1][0] - box[0][0]) * (box[1][1] - box[0][1])
+    for col, pc in ((0, 0), (1, 1), (3, 3)):
+        total = np.sum(s[:, col] * s[:, 9])
+        assert abs(total) > 0.0
+        virial = -p[pc] * area - (0.5 * spin * nktv2p if col == 3 else 0.0)
+        assert virial == pytest.approx(total, rel=1e-9), col
