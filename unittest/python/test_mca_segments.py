@@ -135,22 +135,26 @@ def test_forces_and_torques_balance_on_any_geometry():
     with session() as lmp:
         head, _ = substrate("lj", coeff=coeff, boundary="s s p")    # x cross f without images
         lmp.commands_list(head)
-        lmp.command("displace_atoms all random 0.05 0.05 0 99 units box")
         for x, y in points:
             lmp.command(f"create_atoms 2 single {x!r} {y!r} 0 units box")
+        lmp.commands_list(["group sub type 1", "displace_atoms sub random 0.05 0.05 0 99 units box"])
         lmp.commands_list(finish("lj", coeff, [
             "velocity all create 0.02 5 loop geom", "group pts type 2",
             "velocity pts set 0.3 -0.1 0 sum yes", "set type 2 omega 0 0 0.5",
             "fix move all nve/sphere disc", "timestep 0.01", "pair_coeff 1 1 young 1.0 poisson 0.3 link no",
             "pair_coeff 2 2 young 1.0 poisson 0.3 link no"]))
+        turned = 0.0
         for _ in range(30):
             lmp.command("run 3 post no")
             x, f, torque, ty = arrays(lmp)
+            assert np.sum(ty == 2) == len(points)
             scale = np.abs(f).max()
             assert scale > 0.0
             assert np.abs(f.sum(axis=0)).max() < 1e-12 * scale * len(f)
             moment = np.sum(x[:, 0] * f[:, 1] - x[:, 1] * f[:, 0]) + torque[:, 2].sum()
             assert abs(moment) < 1e-11 * scale * len(f) * 10.0
+            turned = max(turned, np.abs(torque[ty == 2, 2]).max())
+        assert turned > 1e-3 * scale    # the elements on the surface rubbed it
 
 
 DRAG = """
