@@ -1,13 +1,22 @@
 """Dry friction of a block on a rough substrate by the contact segments of pair_style mca
 (examples/mca-friction, two dimensions, units lj): in.friction run with the settings below.
-Writes friction.md (the measured numbers) and friction.png: (a) mu against the sliding
-distance at two normal loads (Amontons), (b) mu for block elements of diameter 1 and 2 on the
-same roughness, (c) the drive spring's force for a soft and a stiff spring (stick-slip against
-smooth sliding), (d) the substrate's top row before and after sliding under a load that
-breaks its links.  Runs in a temporary folder (nothing is kept); two runs at a time.
-    /usr/bin/python3 run_friction.py            # about a minute on two cores
-    /usr/bin/python3 run_friction.py --quick    # reduced runs (a few seconds): the test's"""
+Writes friction.md (the measured numbers) and friction.png:
+  (a) Amontons: mu against sliding at two normal loads (stiff spring);
+  (b) the friction force F(x) of a slow stiff-spring run and its critical stiffness
+      K_c = max(-dF/dx) (Prandtl-Tomlinson);
+  (c) stick-slip: the spring force against the drive distance for K = 0.3 K_c (a saw tooth)
+      and 3 K_c (smooth, follows F(x)), and the block's speed;
+  (d) the stick fraction (drive time with the block's speed below 0.05 V) for K / K_c in
+      {0.3, 1, 3} at two drive speeds;
+  (e) element size: mu for block elements of diameter 1 and 2 on a short-wave roughness;
+  (f) the substrate's top row before and after sliding under a load that breaks its links.
+And friction3d.png, the 3D alternative (in.friction3d: an fcc block on a flat counterface, a
+large element or fix wall/gran): mu against sliding at two loads, a soft spring's drive.
+Runs in temporary folders (nothing is kept); two runs at a time.
+    /usr/bin/python3 run_friction.py            # about 1.5 minutes on two cores
+    /usr/bin/python3 run_friction.py --quick --out /tmp/x   # reduced runs (the test's)"""
 import argparse
+import math
 import os
 import sys
 import tempfile
@@ -25,33 +34,104 @@ from runner import parallel, script, thermo  # noqa: E402
 
 COLUMNS = ["step", "time", "xd", "xb", "Ffr", "FN", "mu", "fspring", "wfr", "broken", "pe", "ke"]
 MU0 = 0.3
-SPEED = 0.01
-TRANSIENT = 1.0    # sliding distance of the drive point left out of the means
+SPEED = 0.01       # the slow drive; the fast one is 10 times faster
+TRANSIENT = 1.0    # drive distance left out of the means
+STICK = 0.05       # the block sticks while its speed is below STICK * V
+DT = 0.02
+# Prandtl-Tomlinson scene: a short block (4 elements in contact) on a long wave only
+PT_LOAD = 0.2
+PT_WIDTH = 4
+PT_WAVE = (0.3, 4.0, 8.0)           # A2, l2, d2 (d2 = 2 l2: one period a piece)
+PT_ROUGH = "0 0.4 2 {} {} {} 4711".format(*PT_WAVE)
+K_FACTORS = (0.3, 1.0, 3.0)
+# element size: a short wave with the half-period of a diameter-1 element's contact
+SIZE_ROUGH = "0.4 0.5 2 0 5 10 4711"
+FLAT = "0 0.5 2 0 5 10 4711"
+# 3D (in.friction3d): the two counterfaces, two loads, a soft spring
+WALLS = {"large": "large element", "gran": "fix wall/gran"}
+LOADS_3D = (0.2, 0.8)
+SOFT_3D = 0.01
+FLAT_VIEW = (-0.5, 7.0)   # panel (f): the surface region
 
 
-def scenes(quick):
-    """name: in.friction's settings."""
-    steps = 10000 if quick else 100000
-    base = dict(P=0.05, K=1.0, V=SPEED, d=1, br=3, mu0=MU0, steps=steps, every=50)
+def steps_for(distance, speed=SPEED):
+    return int(round(distance / speed / DT))
+
+
+def pt_base(quick):
+    slide = 12.0 if quick else 24.0
+    return dict(P=PT_LOAD, K=1.0, V=SPEED, d=1, br=3, bw=PT_WIDTH, mu0=MU0, rough=PT_ROUGH,
+                steps=steps_for(slide), every=50)
+
+
+def stiff_scenes(quick):
+    """The stiff-spring runs: F(x), K_c, Amontons, the energy balance."""
+    base = pt_base(quick)
+    return {"stiff, load 0.2": base, "stiff, load 0.05": dict(base, P=0.05)}
+
+
+def drive_scenes(quick, kc):
+    """Springs K = f K_c, slow and (not --quick) 10 times faster; the spring starts at
+    0.65 mu0 P (below the smallest friction force: the block starts stuck)."""
+    base = dict(pt_base(quick), zeta=0.3, pre=round(0.65 * MU0 * PT_LOAD, 6))
+    out = {}
+    for f in (K_FACTORS[0], K_FACTORS[-1]) if quick else K_FACTORS:
+        out[f"K {f} K_c, V {SPEED}"] = dict(base, K=round(f * kc, 6))
+        if not quick:
+            out[f"K {f} K_c, V {10 * SPEED}"] = dict(base, K=round(f * kc, 6), V=10 * SPEED,
+                                                     steps=base["steps"] // 10)
+    return out
+
+
+def other_scenes(quick):
+    slide = 4.0 if quick else 8.0
+    base = dict(P=0.05, K=1.0, V=SPEED, d=1, br=3, mu0=MU0, rough=SIZE_ROUGH,
+                steps=steps_for(slide), every=50)
     return {
-        "load 0.05": base,
-        "load 0.2": dict(base, P=0.2),
-        "diameter 2": dict(base, d=2, br=2),
-        "soft spring": dict(base, K=0.005, zeta=0.0, steps=2 * steps),
-        "damage": dict(base, P=0.5, strength=0.01, profile=1, steps=max(10000, steps * 3 // 10)),
+        "size: diameter 1": base,
+        "size: diameter 2": dict(base, d=2, br=2),
+        "size: no roughness": dict(base, rough=FLAT),
+        "damage": dict(base, P=0.5, strength=0.01, profile=1,
+                       rough="0.35 0.4 2.0 0.25 5.0 15.0 4711",
+                       steps=steps_for(2.0 if quick else 12.0)),
     }
 
 
+def scenes_3d(quick):
+    """The 3D counterfaces: a stiff spring at two loads (Amontons) and (not --quick) a soft one
+    starting at 0.65 mu0 P (stuck at first)."""
+    base = dict(K=1.0, V=SPEED, steps=steps_for(2.0 if quick else 4.0), every=50)
+    out = {}
+    for wall in WALLS:
+        for load in LOADS_3D:
+            out[f"3D {wall}, load {load}"] = dict(base, wall=wall, P=load)
+        if not quick:
+            out[f"3D {wall}, soft K {SOFT_3D}"] = dict(
+                base, wall=wall, P=LOADS_3D[0], K=SOFT_3D, pre=round(0.65 * MU0 * LOADS_3D[0], 6),
+                steps=steps_for(6.0))
+    return out
+
+
 def run(item):
-    """One scene in a temporary folder: its thermo rows, the substrate's elements before and
+    """A scene of in.friction (see run_script)."""
+    return run_script(item, "in.friction")
+
+
+def run_3d(item):
+    """A scene of in.friction3d (see run_script)."""
+    return run_script(item, "in.friction3d")
+
+
+def run_script(item, path):
+    """One scene in a temporary folder: its drag rows, the substrate's elements before and
     after (profile scenes) and the wall time."""
     name, var = item
     with tempfile.TemporaryDirectory() as tmp:
         start = time.time()
-        with script(os.path.join(HERE, "in.friction"), var, tmp, "log.lammps"):
+        with script(os.path.join(HERE, path), var, tmp, "log.lammps"):
             pass
         wall = time.time() - start
-        rows = thermo(os.path.join(tmp, "log.lammps"))
+        rows = drag_rows(thermo(os.path.join(tmp, "log.lammps")))
         dumps = {}
         for which in ("before", "after"):
             path = os.path.join(tmp, which + ".dump")
@@ -70,8 +150,82 @@ def col(rows, name):
     return rows[:, COLUMNS.index(name)]
 
 
+def drive(rows):
+    """The drive point's travel from the start of the drag."""
+    return col(rows, "xd") - col(rows, "xd")[0]
+
+
 def steady(rows):
-    return rows[col(rows, "xd") > TRANSIENT]
+    return rows[drive(rows) > TRANSIENT]
+
+
+def speed(rows):
+    """The block's speed (its centre's travel over the thermo interval)."""
+    return np.gradient(col(rows, "xb"), col(rows, "time"))
+
+
+def stick_fraction(rows, v_drive):
+    s = drive(rows) > TRANSIENT
+    return float(np.mean(np.abs(speed(rows)[s]) < STICK * v_drive))
+
+
+def smoothed_force(rows, window=1.0):
+    """F_fr against the block's position, averaged over `window` (the substrate's element
+    spacing: the ripple of the loaded surface's dimples is left out) on a grid of 0.01."""
+    s = steady(rows)
+    xb, f = col(s, "xb"), col(s, "Ffr")
+    order = np.argsort(xb)
+    grid = np.arange(xb.min(), xb.max(), 0.01)
+    fg = np.interp(grid, xb[order], f[order])
+    n = int(round(window / 0.01))
+    smooth = np.convolve(fg, np.ones(n) / n, mode="valid")
+    return grid[n // 2:n // 2 + len(smooth)], smooth
+
+
+def critical_stiffness(rows):
+    """K_c = max(-dF/dx) of the smoothed F(x) of a stiff-spring run."""
+    x, f = smoothed_force(rows)
+    return float((-np.gradient(f, x)).max())
+
+
+def closed_form_kc(load):
+    """mu0 P A2_eff pi / l2: the long wave's mean amplitude A2 averaged over the block's
+    PT_WIDTH contacts one apart and over a contact's length S = 1/sqrt(3)."""
+    a2, l2, _ = PT_WAVE
+    n = PT_WIDTH
+    block = abs(math.sin(math.pi * n / (2 * l2)) / (n * math.sin(math.pi / (2 * l2))))
+    u = math.pi / math.sqrt(3.0) / (2 * l2)
+    a2_eff = a2 * block * math.sin(u) / u
+    return MU0 * load * a2_eff * math.pi / l2, a2_eff
+
+
+def measure(name, rows, v_drive=SPEED):
+    s = steady(rows)
+    mu, fs = col(s, "mu"), col(s, "fspring")
+    return dict(name=name, FN=col(s, "FN").mean(), mu=mu.mean(), mu_sd=mu.std(),
+                fs_mean=fs.mean(), fs_sd=fs.std(), fs_pp=fs.max() - fs.min(),
+                slide=col(rows, "xb")[-1], wfr=col(rows, "wfr")[-1],
+                work_path=np.trapz(col(rows, "Ffr"), col(rows, "xb")),
+                work_drive=np.trapz(col(rows, "fspring"), col(rows, "xd")),
+                broken=col(rows, "broken")[-1], stick=stick_fraction(rows, v_drive),
+                vmax=np.abs(speed(rows)[drive(rows) > TRANSIENT]).max() / v_drive)
+
+
+def measure_3d(name, rows, v_drive=SPEED):
+    """measure() and the drive's work on the block, int f_spring dx_block, less the kinetic
+    energy's change: the work the counterface's friction (and the block's damping) took."""
+    m = measure(name, rows, v_drive)
+    ke = col(rows, "ke")
+    m["work_block"] = np.trapz(col(rows, "fspring"), col(rows, "xb")) - (ke[-1] - ke[0])
+    return m
+
+
+def simulate_3d(quick):
+    """The 3D scenes: {name: rows}, their settings and the wall time of each."""
+    settings = scenes_3d(quick)
+    done = parallel(run_3d, list(settings.items()), jobs=2)
+    return {name: rows for name, rows, _, _ in done}, settings, \
+        {name: wall for name, _, _, wall in done}
 
 
 def top_row(before, after):
@@ -83,96 +237,238 @@ def top_row(before, after):
     b = before[top][np.argsort(before[top, 1])]
     a = now[np.argsort(now[:, 1])]
     torn = int((a[:, 2] > b[:, 2].max() + 0.5).sum())
-    return (b[:, 1], b[:, 2]), (a[:, 1], a[:, 2]), torn
+    risen = int((after[:, 2] > b[:, 2].max() + 0.5).sum())
+    return (b[:, 1], b[:, 2]), (a[:, 1], a[:, 2]), torn, risen
 
 
-def measure(name, rows):
-    s = steady(rows)
-    mu, fs, xb = col(s, "mu"), col(s, "fspring"), col(s, "xb")
-    whole = rows
-    work_path = np.trapz(col(whole, "Ffr"), col(whole, "xb"))
-    work_drive = np.trapz(col(whole, "fspring"), col(whole, "xd"))
-    return dict(name=name, FN=col(s, "FN").mean(), mu=mu.mean(), mu_sd=mu.std(),
-                fs_mean=fs.mean(), fs_sd=fs.std(), fs_pp=fs.max() - fs.min(),
-                slide=col(rows, "xb")[-1], wfr=col(rows, "wfr")[-1], work_path=work_path,
-                work_drive=work_drive, broken=col(rows, "broken")[-1],
-                vmax=np.abs(np.diff(xb) / np.diff(col(s, "time"))).max() / SPEED)
+def simulate(quick):
+    """All scenes: the stiff runs first (they give K_c), then the springs and the rest."""
+    stiff = {name: (rows, wall) for name, rows, _, wall in
+             parallel(run, list(stiff_scenes(quick).items()), jobs=2)}
+    kc = critical_stiffness(stiff["stiff, load 0.2"][0])
+    scenes = dict(drive_scenes(quick, kc), **other_scenes(quick))
+    done = parallel(run, list(scenes.items()), jobs=2)
+    results = {name: (rows, dumps, wall) for name, rows, dumps, wall in done}
+    for name, (rows, wall) in stiff.items():
+        results[name] = (rows, {}, wall)
+    settings = dict(stiff_scenes(quick), **scenes)
+    return results, settings, kc
 
 
-def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--quick", action="store_true", help="reduced runs (a few seconds)")
-    args = parser.parse_args()
-    start = time.time()
-    done = parallel(run, list(scenes(args.quick).items()), jobs=2)
-    results = {name: (drag_rows(rows), dumps, wall) for name, rows, dumps, wall in done}
-    table = {name: measure(name, r[0]) for name, r in results.items()}
-    total = time.time() - start
-
-    fig, ax = plt.subplots(2, 2, figsize=(12, 8.5))
+def plot(results, settings, table, kc, path):
+    fig, ax = plt.subplots(3, 2, figsize=(13, 12.5))
     a = ax[0, 0]
-    for name in ("load 0.05", "load 0.2"):
+    for name in ("stiff, load 0.05", "stiff, load 0.2"):
         r = results[name][0]
         a.plot(col(r, "xb"), col(r, "mu"), lw=0.7,
                label=f"{name}: mean mu {table[name]['mu']:.4f}")
     a.axhline(MU0, color="k", ls=":", lw=0.8, label="mu0")
     a.set(xlabel="sliding distance of the block", ylabel="mu = F_fr / F_N",
-          title="(a) Amontons: two normal loads, stiff spring")
+          title=f"(a) Amontons: two loads, K = 1, long wave only, {PT_WIDTH} elements in contact")
     a.legend(fontsize=8)
     a = ax[0, 1]
-    for name in ("load 0.05", "diameter 2"):
-        r = results[name][0]
-        label = "diameter 1" if name == "load 0.05" else name
-        a.plot(col(r, "xb"), col(r, "mu"), lw=0.7,
-               label=f"block elements of {label}: sd {table[name]['mu_sd']:.4f}")
-    a.set(xlabel="sliding distance of the block", ylabel="mu",
-          title="(b) element size: the same roughness, load 0.05")
+    r = results["stiff, load 0.2"][0]
+    x, f = smoothed_force(r)
+    a.plot(col(r, "xb"), col(r, "Ffr"), lw=0.6, color="0.6", label="F_fr (stiff spring, V 0.01)")
+    a.plot(x, f, lw=1.2, label="averaged over 1 (the substrate's spacing)")
+    i = int(np.argmax(-np.gradient(f, x)))
+    a.plot(x[i] + np.array([-1.5, 1.5]), f[i] - kc * np.array([-1.5, 1.5]), "k--", lw=0.8,
+           label=f"max -dF/dx = K_c = {kc:.4f}")
+    a.set(xlabel="block position x (from its start)", ylabel="friction force F(x)",
+          title=f"(b) F(x), load {PT_LOAD}: A2 {PT_WAVE[0]}, l2 {PT_WAVE[1]}, d2 {PT_WAVE[2]}")
     a.legend(fontsize=8)
     a = ax[1, 0]
-    for name in ("soft spring", "load 0.05"):
-        r = results[name][0]
-        k = scenes(args.quick)[name]["K"]
-        a.plot(col(r, "time"), col(r, "fspring"), lw=0.7, label=f"spring K = {k}, dashpot zeta = {scenes(args.quick)[name].get('zeta', 0.3)}")
-    a.set(xlabel="time", ylabel="drive spring force",
-          title=f"(c) stick-slip: soft against stiff spring, V = {SPEED}, load 0.05")
+    a.plot(col(r, "xb"), col(r, "Ffr"), lw=0.6, color="0.7", label="F(x) (the stiff run)")
+    for fct in (K_FACTORS[0], K_FACTORS[-1]):
+        name = f"K {fct} K_c, V {SPEED}"
+        rr = results[name][0]
+        a.plot(drive(rr), col(rr, "fspring"), lw=1.0,
+               label=f"spring force, K = {fct} K_c = {settings[name]['K']:.4g}: "
+                     f"stick {table[name]['stick']:.2f}")
+    a.set(xlabel="drive distance V t", ylabel="force",
+          title=f"(c) stick-slip, V = {SPEED}: spring force against the drive")
     a.legend(fontsize=8)
     a = ax[1, 1]
-    dumps = results["damage"][1]
-    (xb, yb), (xa, ya), torn = top_row(dumps["before"], dumps["after"])
-    a.plot(xb, yb, ".-", ms=3, lw=0.7, label="before (under the load)")
-    a.plot(xa, ya, ".-", ms=3, lw=0.7, label="after")
-    a.set(xlabel="x", ylabel="y of the substrate's top row elements",
-          title=f"(d) load 0.5, sigma_c = 0.01: {table['damage']['broken']:.0f} links broken, "
-                f"{torn} torn off")
-    table["damage"]["torn"] = torn
+    for fct in (K_FACTORS[0], K_FACTORS[-1]):
+        name = f"K {fct} K_c, V {SPEED}"
+        rr = results[name][0]
+        a.plot(drive(rr), speed(rr) / SPEED, lw=0.8, label=f"K = {fct} K_c")
+    a.axhline(STICK, color="k", ls=":", lw=0.8, label=f"{STICK} V (stuck below)")
+    a.set(xlabel="drive distance V t", ylabel="block speed / V", title="(d) the block's speed")
+    speeds = sorted({v["V"] for n, v in settings.items() if n.startswith("K ")})
+    text = ["stick fraction", "K/K_c  " + "  ".join(f"V {v:g}" for v in speeds)]
+    for fct in K_FACTORS:
+        cells = [table.get(f"K {fct} K_c, V {v:g}") for v in speeds]
+        if all(c is None for c in cells):
+            continue
+        text.append(f"{fct:<5g}  " + "  ".join("  --  " if c is None else f"{c['stick']:6.2f}"
+                                              for c in cells))
+    a.text(0.98, 0.97, "\n".join(text), transform=a.transAxes, ha="right", va="top",
+           family="monospace", fontsize=8, bbox=dict(fc="w", ec="0.7"))
+    a.legend(fontsize=8, loc="upper left")
+    a = ax[2, 0]
+    for name in ("size: diameter 1", "size: diameter 2", "size: no roughness"):
+        rr = results[name][0]
+        m = table[name]
+        a.plot(col(rr, "xb"), col(rr, "mu"), lw=0.7,
+               label=f"{name[6:]}: sd / mean {m['mu_sd'] / m['mu']:.3f}")
+    a.set(xlabel="sliding distance of the block", ylabel="mu",
+          title=f"(e) element size: roughness A1 l1 d1 = {' '.join(SIZE_ROUGH.split()[:3])}, "
+                f"no long wave, load 0.05")
     a.legend(fontsize=8)
+    a = ax[2, 1]
+    dumps = results["damage"][1]
+    (xb, yb), (xa, ya), torn, risen = top_row(dumps["before"], dumps["after"])
+    a.plot(xb, yb, ".-", ms=3, lw=0.7, label="top row before (under the load)")
+    a.plot(xa, ya, ".", ms=4, label="top row after")
+    rest = dumps["after"]
+    a.plot(rest[:, 1], rest[:, 2], ".", ms=1.5, color="0.6", label="all substrate elements after")
+    away = int((rest[:, 2] > FLAT_VIEW[1]).sum())
+    a.set(xlabel="x", ylabel="y", ylim=FLAT_VIEW,
+          title=f"(f) load 0.5, sigma_c = 0.01: {table['damage']['broken']:.0f} links broken, "
+                f"{risen} elements risen > 0.5,\n{away} of them torn off and flown above "
+                f"y = {FLAT_VIEW[1]:g} (out of view)")
+    a.legend(fontsize=8, loc="upper right")
     fig.tight_layout()
-    fig.savefig(os.path.join(HERE, "friction.png"), dpi=110)
+    fig.savefig(path, dpi=100)
 
-    lines = ["# Measured (run_friction.py" + (" --quick" if args.quick else "") + ")", "",
-             f"mu0 = {MU0}, drive speed {SPEED}, means over the drive point's sliding beyond "
-             f"{TRANSIENT}; wall time {total:.0f} s on two cores.", "",
-             "| scene | settings | F_N | mean mu | sd mu | spring force mean | sd | max - min "
-             "| block's top speed / V | slid | friction work c_pw[6] | int F_fr dx_block "
-             "| drive work | broken links |",
-             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+
+def plot_3d(results, settings, table, flat_mu, path):
+    """friction3d.png: (a) mu against sliding, two counterfaces at two loads; (b) the soft
+    spring's force against the drive; (c) the block's speed."""
+    soft = [n for n in settings if "soft" in n]
+    fig, ax = plt.subplots(1, 3 if soft else 1, figsize=(18 if soft else 7, 5), squeeze=False)
+    a = ax[0, 0]
+    for name in settings:
+        if "soft" in name:
+            continue
+        r = results[name]
+        a.plot(col(r, "xb"), col(r, "mu"), lw=0.8,
+               ls="-" if "large" in name else "--",
+               label=f"{WALLS[settings[name]['wall']]}, load {settings[name]['P']}: "
+                     f"mean mu {table[name]['mu']:.4f}")
+    a.axhline(MU0, color="k", ls=":", lw=0.8, label=f"mu0 = {MU0}")
+    if flat_mu is not None:
+        a.axhline(flat_mu, color="0.5", lw=0.6, label=f"2D segments, no roughness: {flat_mu:.4f}")
+    a.set(xlabel="sliding distance of the block", ylabel="mu = F_fr / F_N", ylim=(0.297, 0.3015),
+          title="(a) 3D: fcc block (32 elements on the face) on a flat counterface, K = 1")
+    a.legend(fontsize=8, loc="lower right")
+    if soft:
+        a, b = ax[0, 1], ax[0, 2]
+        for name in soft:
+            r = results[name]
+            lab = WALLS[settings[name]["wall"]]
+            a.plot(drive(r), col(r, "fspring"), lw=1.0, ls="-" if "large" in name else "--",
+                   label=f"{lab}: spring force, stick {table[name]['stick']:.2f}")
+            a.plot(drive(r), col(r, "Ffr"), lw=0.6, ls="-" if "large" in name else "--",
+                   label=f"{lab}: F_fr")
+            b.plot(drive(r), speed(r) / SPEED, lw=0.8, ls="-" if "large" in name else "--",
+                   label=lab)
+        p = settings[soft[0]]["P"]
+        a.axhline(MU0 * p, color="k", ls=":", lw=0.8, label="mu0 P")
+        a.set(xlabel="drive distance V t", ylabel="force",
+              title=f"(b) soft spring K = {SOFT_3D}, V = {SPEED}, load {p}, starting at 0.65 mu0 P")
+        a.legend(fontsize=8)
+        b.axhline(STICK, color="k", ls=":", lw=0.8, label=f"{STICK} V (stuck below)")
+        b.set(xlabel="drive distance V t", ylabel="block speed / V", title="(c) the block's speed")
+        b.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(path, dpi=100)
+
+
+def report_3d(settings, table, walls, flat_mu):
+    lines = ["", "## 3D: a flat counterface (in.friction3d)", "",
+             f"An fcc block of 4 x 4 x 2 cells (128 elements of diameter 1, 32 on its (001) face) "
+             f"on a large element (radius 1e4) or fix wall/gran (granular hooke, linear_history); "
+             f"mu0 = {MU0}, no roughness.  Means beyond a drive of {TRANSIENT}.  Friction work "
+             f"per distance: c_pw[6] (the pair's tally: the large element only), int F_fr "
+             f"dx_block, and the drive's work on the block less the kinetic energy's change, each "
+             f"over the block's slide.", "",
+             "| scene | settings | F_N | mean mu | sd mu | mu / mu0 | stick fraction "
+             "| block's top speed / V | slid | c_pw[6] / slide | int F_fr dx / slide "
+             "| (drive - kinetic) / slide | wall time (s) |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for name, m in table.items():
-        v = scenes(args.quick)[name]
-        settings = f"P {v['P']}, K {v['K']}, d {v['d']}" + \
+        v = settings[name]
+        text = f"{WALLS[v['wall']]}, P {v['P']}, K {v['K']:.4g}, V {v['V']}" + \
+            (f", pre {v['pre']}" if "pre" in v else "")
+        s = m["slide"]
+        lines.append(f"| {name} | {text} | {m['FN']:.4f} | {m['mu']:.5f} | {m['mu_sd']:.5f} "
+                     f"| {m['mu'] / MU0:.5f} | {m['stick']:.3f} | {m['vmax']:.2f} | {s:.3f} "
+                     f"| {m['wfr'] / s:.5f} | {m['work_path'] / s:.5f} "
+                     f"| {m['work_block'] / s:.5f} | {walls[name]:.1f} |")
+    lines.append("")
+    for wall in WALLS:
+        hi, lo = (table[f"3D {wall}, load {p}"]["mu"] for p in (LOADS_3D[1], LOADS_3D[0]))
+        lines.append(f"Amontons ({WALLS[wall]}): mean mu at load {LOADS_3D[1]} / at load "
+                     f"{LOADS_3D[0]} = {hi / lo:.5f}.")
+    if flat_mu is not None:
+        lines.append(f"2D segments without roughness (size: no roughness): mean mu {flat_mu:.4f}.")
+    return lines
+
+
+def report(results, settings, table, kc, total, quick):
+    kc_closed, a2_eff = closed_form_kc(PT_LOAD)
+    lines = ["# Measured (run_friction.py" + (" --quick" if quick else "") + ")", "",
+             f"mu0 = {MU0}; means over the drive point's travel beyond {TRANSIENT}; the block "
+             f"sticks while its speed is below {STICK} V; wall time {total:.0f} s on two cores.",
+             "",
+             "| scene | settings | F_N | mean mu | sd mu | spring force mean | sd | max - min "
+             "| block's top speed / V | stick fraction | slid | friction work c_pw[6] "
+             "| int F_fr dx_block | drive work | broken links |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    for name, m in table.items():
+        v = settings[name]
+        text = f"P {v['P']}, K {v['K']:.4g}, V {v['V']}, d {v['d']}, bw {v.get('bw', 10)}" + \
             (f", sigma_c {v['strength']}" if "strength" in v else "")
-        lines.append(f"| {name} | {settings} | {m['FN']:.4f} | {m['mu']:.4f} | {m['mu_sd']:.4f} "
+        lines.append(f"| {name} | {text} | {m['FN']:.4f} | {m['mu']:.4f} | {m['mu_sd']:.4f} "
                      f"| {m['fs_mean']:.5f} | {m['fs_sd']:.5f} | {m['fs_pp']:.5f} "
-                     f"| {m['vmax']:.2f} | {m['slide']:.2f} | {m['wfr']:.5f} "
+                     f"| {m['vmax']:.2f} | {m['stick']:.3f} | {m['slide']:.2f} | {m['wfr']:.5f} "
                      f"| {m['work_path']:.5f} | {m['work_drive']:.5f} | {m['broken']:.0f} |")
-    r = table["load 0.2"]["mu"] / table["load 0.05"]["mu"]
-    lines += ["", f"Amontons: mean mu at load 0.2 / at load 0.05 = {r:.4f}.",
-              f"Element size: sd of mu, diameter 2 / diameter 1 = "
-              f"{table['diameter 2']['mu_sd'] / table['load 0.05']['mu_sd']:.3f}.",
-              f"Stick-slip: spring force max - min, soft / stiff = "
-              f"{table['soft spring']['fs_pp'] / table['load 0.05']['fs_pp']:.2f}.",
-              f"Damage: {table['damage']['torn']} elements of the top row torn off (risen more "
-              f"than 0.5 above it)."]
-    with open(os.path.join(HERE, "friction.md"), "w") as out:
+    amontons = table["stiff, load 0.2"]["mu"] / table["stiff, load 0.05"]["mu"]
+    energy = table["stiff, load 0.2"]["wfr"] / table["stiff, load 0.2"]["work_path"]
+    d1, d2, flat = (table[f"size: {k}"] for k in ("diameter 1", "diameter 2", "no roughness"))
+    rel = [m["mu_sd"] / m["mu"] for m in (d1, d2, flat)]
+    lines += ["",
+              f"Amontons: mean mu at load 0.2 / at load 0.05 = {amontons:.4f}.",
+              f"Energy: c_pw[6] / int F_fr dx_block (stiff, load 0.2) = {energy:.4f}.",
+              f"K_c measured = max(-dF/dx) of F(x) averaged over 1 = {kc:.5f}; closed form "
+              f"mu0 P A2_eff pi / l2 = {kc_closed:.5f} (A2_eff = {a2_eff:.4f}, the mean "
+              f"amplitude; the pieces' amplitudes are drawn in [A2/2, 3A2/2]).",
+              "Stick fraction: " + ", ".join(f"{n}: {table[n]['stick']:.3f}"
+                                             for n in table if n.startswith("K ")) + ".",
+              f"Element size: sd / mean of mu: diameter 1 {rel[0]:.4f}, diameter 2 {rel[1]:.4f} "
+              f"(ratio {rel[1] / rel[0]:.3f}), no roughness {rel[2]:.4f}.",
+              f"Damage: {table['damage']['torn']} elements of the top row and "
+              f"{table['damage']['risen']} substrate elements in all risen more than 0.5 above "
+              f"the top row."]
+    return lines
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--quick", action="store_true", help="reduced runs (the test's)")
+    parser.add_argument("--out", default=HERE,
+                        help="folder for friction.md and friction.png (default: this one)")
+    args = parser.parse_args()
+    start = time.time()
+    results, settings, kc = simulate(args.quick)
+    table = {}
+    for name in settings:
+        table[name] = measure(name, results[name][0], settings[name]["V"])
+    dumps = results["damage"][1]
+    _, _, table["damage"]["torn"], table["damage"]["risen"] = top_row(dumps["before"],
+                                                                      dumps["after"])
+    results_3d, settings_3d, walls_3d = simulate_3d(args.quick)
+    table_3d = {name: measure_3d(name, results_3d[name], settings_3d[name]["V"])
+                for name in settings_3d}
+    total = time.time() - start
+    plot(results, settings, table, kc, os.path.join(args.out, "friction.png"))
+    flat_mu = table["size: no roughness"]["mu"]
+    plot_3d(results_3d, settings_3d, table_3d, flat_mu, os.path.join(args.out, "friction3d.png"))
+    lines = report(results, settings, table, kc, total, args.quick) + \
+        report_3d(settings_3d, table_3d, walls_3d, flat_mu)
+    with open(os.path.join(args.out, "friction.md"), "w") as out:
         out.write("\n".join(lines) + "\n")
     print("\n".join(lines))
 

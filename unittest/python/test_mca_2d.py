@@ -364,6 +364,6 @@ def test_two_discs_weld_and_then_hold_in_tension():
         lmp.commands_list(["displace_atoms two move -0.03 0 0 units box", "run 0"])
         formed = lmp.extract_compute("pw", 0, 1)[1]
         lmp.commands_list(["displace_atoms two move 0.2 0 0 units box", "run 0"])
-        f = lmp.numpy.extract_atom("f")[:2]
+        f = np.array(lmp.numpy.extract_atom("f")[:2])
     assert formed == 1.0
     assert f[0, 0] > 0.0 and f[1, 0] < 0.0    # pulled towards each other
