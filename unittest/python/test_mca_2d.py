@@ -367,3 +367,47 @@ def test_two_discs_weld_and_then_hold_in_tension():
         f = np.array(lmp.numpy.extract_atom("f")[:2])
     assert formed == 1.0
     assert f[0, 0] > 0.0 and f[1, 0] < 0.0    # pulled towards each other
+
+
+@pytest.mark.parametrize("units", ["lj", "si"])
+def test_dimer_damages_and_unloads_along_the_secant(units):
+    """A linked pair of discs (Z = 1: its contact S = 2 Omega / R, Omega = pi R^2 / F; many-
+    body term off) pulled past sigma_d carries S g(a e) (the response's parabola g, type b),
+    and brought back to a smaller elongation S (g(kappa) / kappa) a e (the secant)."""
+    r, e_mod = SCALE[units]
+    g_mod = e_mod / 2.6
+    sc, sd = 0.01 * e_mod, 0.005 * e_mod
+    fraction = 0.9
+    s_area = 2.0 * (math.pi * r * r / fraction) / r
+    a = g_mod / r    # the halves 2G/R in series
+    with session() as lmp:
+        lmp.commands_list([
+            f"units {units}", "dimension 2", "atom_style sphere", "boundary f f p",
+            "comm_modify vel yes", f"region box block {-5 * r!r} {5 * r!r} {-5 * r!r} {5 * r!r} "
+            f"{-0.5 * r!r} {0.5 * r!r}", "create_box 1 box",
+            "create_atoms 1 single 0 0 0 units box",
+            f"create_atoms 1 single {2 * r!r} 0 0 units box", f"set group all diameter {2 * r!r}",
+            f"neighbor {0.2 * r!r} bin",
+            f"pair_style mca fraction {fraction} manybody no plane stress",
+            f"pair_coeff 1 1 young {e_mod!r} poisson 0.3 strength {sc!r} damage {sd!r}",
+            "run 0", "group two id 2"])
+        nktv2p = lmp.extract_global("nktv2p")
+
+        def pull_to(elong):
+            x = lmp.numpy.extract_atom("x")
+            lmp.command(f"displace_atoms two move {2 * r + elong - x[1, 0] + x[0, 0]!r} 0 0 "
+                        "units box")
+            # steps without an integrator: a setup only re-evaluates (it changes no state); the
+            # first step damages, the second transmits the damaged stress
+            lmp.command("run 2")
+            return float(lmp.numpy.extract_atom("f")[0, 0])
+
+        e1 = 1.5 * sd / a
+        f1 = pull_to(e1)
+        e2 = 0.5 * e1
+        f2 = pull_to(e2)
+    kappa = a * e1
+    u = 1.0 - (kappa - sd) / (2.0 * (sc - sd))
+    g = sc - (sc - sd) * u * u
+    assert f1 == pytest.approx(s_area * g / nktv2p, rel=1e-9)
+    assert f2 == pytest.approx(s_area * g / kappa * a * e2 / nktv2p, rel=1e-9)
