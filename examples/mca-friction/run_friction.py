@@ -10,10 +10,13 @@ Writes friction.md (the measured numbers) and friction.png:
       {0.3, 1, 3} at two drive speeds;
   (e) element size: mu for block elements of diameter 1 and 2 on a short-wave roughness;
   (f) the substrate's top row before and after sliding under a load that breaks its links.
+And (not --quick) friction_runin.png, the running-in: three laps of the periodic substrate
+(3 x 40 of sliding) at twice the damage scene's strength: mu against sliding with the laps'
+boundaries, the top row's profile before, after the first and after the last lap.
 And friction3d.png, the 3D alternative (in.friction3d: an fcc block on a flat counterface, a
 large element or fix wall/gran): mu against sliding at two loads, a soft spring's drive.
 Runs in temporary folders (nothing is kept); two runs at a time.
-    /usr/bin/python3 run_friction.py            # about 1.5 minutes on two cores
+    /usr/bin/python3 run_friction.py            # about 2 minutes on two cores
     /usr/bin/python3 run_friction.py --quick --out /tmp/x   # reduced runs (the test's)"""
 import argparse
 import math
@@ -52,6 +55,14 @@ WALLS = {"large": "large element", "gran": "fix wall/gran"}
 LOADS_3D = (0.2, 0.8)
 SOFT_3D = 0.01
 FLAT_VIEW = (-0.5, 7.0)   # panel (f): the surface region
+DAMAGE_ROUGH = "0.35 0.4 2.0 0.25 5.0 15.0 4711"
+# running-in: the damage scene's load and roughness, twice its strength, three laps of the
+# periodic substrate (its length, 40)
+LAP = 40.0
+LAPS = 3
+RUNIN_STRENGTH = 0.02
+BLOCK_CENTRE = 10.0      # the 10-wide block's centre at the start (its elements at x 5 to 15)
+AWAY = 8.0               # the profile away from the block: beyond its centre +- 8 (its dimple)
 
 
 def steps_for(distance, speed=SPEED):
@@ -91,10 +102,17 @@ def other_scenes(quick):
         "size: diameter 1": base,
         "size: diameter 2": dict(base, d=2, br=2),
         "size: no roughness": dict(base, rough=FLAT),
-        "damage": dict(base, P=0.5, strength=0.01, profile=1,
-                       rough="0.35 0.4 2.0 0.25 5.0 15.0 4711",
+        "damage": dict(base, P=0.5, strength=0.01, profile=1, rough=DAMAGE_ROUGH,
                        steps=steps_for(2.0 if quick else 12.0)),
     }
+
+
+def runin_scene():
+    """The running-in (full run only, 45 s): the damage scene at twice its strength for LAPS
+    laps, the substrate's elements dumped at the start of the drag and after each lap."""
+    return {"running-in": dict(P=0.5, K=1.0, V=SPEED, d=1, br=3, mu0=MU0, rough=DAMAGE_ROUGH,
+                               strength=RUNIN_STRENGTH, steps=LAPS * steps_for(LAP),
+                               pdump=steps_for(LAP), every=100)}
 
 
 def scenes_3d(quick):
@@ -124,7 +142,7 @@ def run_3d(item):
 
 def run_script(item, path):
     """One scene in a temporary folder: its drag rows, the substrate's elements before and
-    after (profile scenes) and the wall time."""
+    after (profile scenes; "laps": the frames of profile.dump) and the wall time."""
     name, var = item
     with tempfile.TemporaryDirectory() as tmp:
         start = time.time()
@@ -137,7 +155,21 @@ def run_script(item, path):
             path = os.path.join(tmp, which + ".dump")
             if os.path.exists(path):
                 dumps[which] = np.loadtxt(path, skiprows=9)
+        path = os.path.join(tmp, "profile.dump")
+        if os.path.exists(path):
+            dumps["laps"] = dump_frames(path)
     return name, rows, dumps, wall
+
+
+def dump_frames(path):
+    """The frames of a dump of id x y: a list of arrays, each sorted by id."""
+    frames = []
+    for block in open(path).read().split("ITEM: TIMESTEP\n")[1:]:
+        lines = block.splitlines()
+        n = int(lines[2])
+        a = np.array([[float(v) for v in line.split()] for line in lines[8:8 + n]])
+        frames.append(a[np.argsort(a[:, 0])])
+    return frames
 
 
 def drag_rows(rows):
@@ -241,12 +273,66 @@ def top_row(before, after):
     return (b[:, 1], b[:, 2]), (a[:, 1], a[:, 2]), torn, risen
 
 
+def profile_stats(x, y, period):
+    """A row of elements' profile over a periodic length: the rms height about its mean line
+    and the mean |slope| between neighbours (sorted by x, wrapped)."""
+    x = np.mod(x, period)
+    order = np.argsort(x)
+    x, y = x[order], y[order]
+    dx = np.diff(np.r_[x, x[0] + period])
+    dy = np.diff(np.r_[y, y[0]])
+    return float(y.std()), float(np.mean(np.abs(dy / dx)))
+
+
+def runin_laps(rows, frames, every):
+    """Per lap (the drive's travel, the first lap from TRANSIENT): mean and sd of mu, mean F_N,
+    the links broken and the friction work in the lap.  After it (frames every `every` steps),
+    the top row (the elements within 0.3 of the highest at the start of the drag): how many of
+    it and of the whole substrate have risen more than 0.5 above the start's top (torn off);
+    of those in place away from the block (beyond its centre +- AWAY: its elastic dimple, which
+    shifts with the spring's stretch, left out), the rms height about the mean line, the mean
+    |slope| and the rms of their height change since the start.  Row 0: the start of the
+    drag."""
+    first = frames[0]
+    top = first[:, 2] > first[:, 2].max() - 0.3
+    ids, ymax = first[top, 0], first[top, 2].max()
+    y0 = dict(zip(first[top, 0], first[top, 2]))
+    laps = []
+    d = drive(rows)
+    step = col(rows, "step")
+    for k, frame in enumerate(frames):
+        row = frame[np.isin(frame[:, 0], ids)]
+        row = row[row[:, 2] <= ymax + 0.5]
+        centre = BLOCK_CENTRE + col(rows, "xb")[np.argmin(np.abs(step - k * every))]
+        off = np.abs((row[:, 1] - centre + LAP / 2) % LAP - LAP / 2)
+        away = row[off > AWAY]
+        rms, slope = profile_stats(away[:, 1], away[:, 2], LAP) \
+            if len(away) > 1 else (float("nan"), float("nan"))
+        change = np.array([y - y0[i] for i, y in zip(away[:, 0], away[:, 2])])
+        m = dict(lap=k, rms=rms, slope=slope, flown=len(ids) - len(row),
+                 change=float(np.sqrt(np.mean(change ** 2))) if len(change) else float("nan"),
+                 risen=int((frame[:, 2] > ymax + 0.5).sum()), x=row[:, 1] % LAP,
+                 y=row[:, 2], centre=centre % LAP)
+        if k > 0:
+            s = (d > max((k - 1) * LAP, TRANSIENT)) & (d <= k * LAP)
+            before = rows[d <= (k - 1) * LAP][-1]
+            after = rows[s][-1]
+            mu = col(rows[s], "mu")
+            m.update(mu=mu.mean(), mu_sd=mu.std(), FN=col(rows[s], "FN").mean(),
+                     broken=after[COLUMNS.index("broken")] - before[COLUMNS.index("broken")],
+                     wfr=after[COLUMNS.index("wfr")] - before[COLUMNS.index("wfr")])
+        laps.append(m)
+    return laps
+
+
 def simulate(quick):
     """All scenes: the stiff runs first (they give K_c), then the springs and the rest."""
     stiff = {name: (rows, wall) for name, rows, _, wall in
              parallel(run, list(stiff_scenes(quick).items()), jobs=2)}
     kc = critical_stiffness(stiff["stiff, load 0.2"][0])
     scenes = dict(drive_scenes(quick, kc), **other_scenes(quick))
+    if not quick:
+        scenes = dict(runin_scene(), **scenes)   # the longest first
     done = parallel(run, list(scenes.items()), jobs=2)
     results = {name: (rows, dumps, wall) for name, rows, dumps, wall in done}
     for name, (rows, wall) in stiff.items():
@@ -331,6 +417,76 @@ def plot(results, settings, table, kc, path):
     a.legend(fontsize=8, loc="upper right")
     fig.tight_layout()
     fig.savefig(path, dpi=100)
+
+
+def plot_runin(rows, laps, path):
+    """friction_runin.png: (a) mu against the block's sliding, the laps' boundaries and the
+    mean of each lap; (b) the top row's profile at the start, after the first and after the
+    last lap (the elements still in place, x over the substrate's period)."""
+    fig, ax = plt.subplots(2, 1, figsize=(13, 9))
+    a = ax[0]
+    xb = col(rows, "xb")
+    a.plot(xb, col(rows, "mu"), lw=0.4, color="0.6", label="mu = F_fr / F_N")
+    x, f = smoothed_force(rows, window=LAP / 8)
+    fn = col(steady(rows), "FN").mean()
+    a.plot(x, f / fn, lw=1.2, label=f"F_fr averaged over {LAP / 8:g}, / mean F_N")
+    for m in laps[1:]:
+        k = m["lap"]
+        a.axvline(k * LAP, color="k", ls=":", lw=0.8)
+        a.plot([(k - 1) * LAP, k * LAP], [m["mu"]] * 2, "r-", lw=1.5)
+        a.text((k - 0.5) * LAP, 0.02, f"lap {k}: mu {m['mu']:.3f} +- {m['mu_sd']:.3f}\n"
+               f"{m['broken']:.0f} links broken, {m['flown']} of the top row torn off",
+               ha="center", fontsize=8, bbox=dict(fc="w", ec="0.7"))
+    a.axhline(MU0, color="k", lw=0.6, ls="--", label=f"mu0 = {MU0}")
+    a.set(xlabel="sliding distance of the block (laps of the 40-long periodic substrate)",
+          ylabel="mu", ylim=(0, 0.8),
+          title=f"(a) running-in: load 0.5, sigma_c = {RUNIN_STRENGTH}, roughness "
+                f"{DAMAGE_ROUGH}, K = 1, V = {SPEED}")
+    a.legend(fontsize=8, loc="upper left")
+    a = ax[1]
+    for m in laps:
+        o = np.argsort(m["x"])
+        name = "start of the drag (loaded)" if m["lap"] == 0 else f"after lap {m['lap']}"
+        if len(o) < 2:
+            a.plot([], [], "o", mfc="none", label=f"{name}: {m['flown']} torn off, none in place")
+            continue
+        a.plot(m["x"][o], m["y"][o], ".-" if m["lap"] < 2 else "o", ms=3 + m["lap"], lw=0.7,
+               mfc="none", label=f"{name}: {len(o)} in place; away from the block rms "
+                                 f"{m['rms']:.4f}, mean |slope| {m['slope']:.4f}; rms change "
+                                 f"{m['change']:.4f}")
+    c = laps[0]["centre"]
+    a.axvspan(c - AWAY, c + AWAY, color="0.9", zorder=0,
+              label=f"the block's centre +- {AWAY:g} at each frame (its elastic dimple)")
+    a.set(xlabel="x (over the substrate's period 40)", ylabel="y",
+          title="(b) the substrate's top row (elements risen > 0.5 above it left out: torn off)")
+    a.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(path, dpi=100)
+
+
+def report_runin(laps):
+    lines = ["", "## Running-in (three laps of the periodic substrate)", "",
+             f"The damage scene (load 0.5, roughness {DAMAGE_ROUGH}, K 1, V {SPEED}, bw 10) at "
+             f"the substrate's strength {RUNIN_STRENGTH} for {LAPS} laps of its period "
+             f"{LAP:g}.  Per lap of the drive (the first from {TRANSIENT}): mu, F_N, the links "
+             f"broken and the friction work c_pw[6] in the lap; after it, the top row's rms "
+             f"height about its mean line and mean |slope| between neighbours away from the "
+             f"block (beyond its centre +- {AWAY:g}: its elastic dimple left out) and the rms "
+             f"of these elements' height change since the start, over the elements still in "
+             f"place; the top row's elements and all "
+             f"substrate elements risen more than 0.5 above the start's top row (torn off).", "",
+             "| after lap | mean mu | sd mu | F_N | links broken | friction work | top row rms "
+             "(away) | mean slope (away) | rms change | top row torn off "
+             "| substrate elements torn off |",
+             "|---|---|---|---|---|---|---|---|---|---|---|"]
+    for m in laps:
+        cells = ["--"] * 5 if m["lap"] == 0 else [
+            f"{m['mu']:.4f}", f"{m['mu_sd']:.4f}", f"{m['FN']:.4f}", f"{m['broken']:.0f}",
+            f"{m['wfr']:.4f}"]
+        lines.append(f"| {m['lap']} | " + " | ".join(cells) +
+                     f" | {m['rms']:.4f} | {m['slope']:.4f} | {m['change']:.4f} | {m['flown']} "
+                     f"| {m['risen']} |")
+    return lines
 
 
 def plot_3d(results, settings, table, flat_mu, path):
@@ -464,9 +620,15 @@ def main():
                 for name in settings_3d}
     total = time.time() - start
     plot(results, settings, table, kc, os.path.join(args.out, "friction.png"))
+    runin = []
+    if "running-in" in results:
+        rows, dumps, _ = results["running-in"]
+        laps = runin_laps(rows, dumps["laps"], settings["running-in"]["pdump"])
+        plot_runin(rows, laps, os.path.join(args.out, "friction_runin.png"))
+        runin = report_runin(laps)
     flat_mu = table["size: no roughness"]["mu"]
     plot_3d(results_3d, settings_3d, table_3d, flat_mu, os.path.join(args.out, "friction3d.png"))
-    lines = report(results, settings, table, kc, total, args.quick) + \
+    lines = report(results, settings, table, kc, total, args.quick) + runin + \
         report_3d(settings_3d, table_3d, walls_3d, flat_mu)
     with open(os.path.join(args.out, "friction.md"), "w") as out:
         out.write("\n".join(lines) + "\n")

@@ -13,11 +13,15 @@ from its reduced runs (run_friction.py --quick, about 35 s on two cores).
 - 3D (in.friction3d, about 4 s more): an fcc block dragged over a large counterface element
   and over fix wall/gran slides at mu0 (Coulomb's law of each contact) within 5 % at two
   loads, the loads' mu within 1 % of each other; the pair's friction work on the large element
-  is the integral of F_fr over the block's path within 2 %."""
+  is the integral of F_fr over the block's path within 2 %.
+- The running-in's profile measure (no run: the three laps take 45 s, the full run's only):
+  the rms height and the mean |slope| of a sampled sine row, unsorted and across the period's
+  wrap, are the closed forms a / sqrt(2) and 4 a / L."""
 import math
 import os
 import sys
 
+import numpy as np
 import pytest
 
 # an importable module: its runs go to worker processes (multiprocessing pickles by name)
@@ -113,3 +117,16 @@ def test_3d_large_element_friction_work_is_the_force_times_the_path(example_3d):
     m = table["3D large, load 0.2"]
     assert m["broken"] == 0
     assert m["wfr"] == pytest.approx(m["work_path"], rel=0.02)
+
+
+def test_profile_measure_of_a_sine_row_is_the_closed_form():
+    """A row of 40 elements y = a sin(2 pi x / L) sampled one apart over the period L = 40 (its
+    extremes among the samples), shuffled and shifted by a period: rms a / sqrt(2), and the
+    mean |slope| between neighbours its total variation 4 a over L."""
+    amplitude, period = 0.05, run_friction.LAP
+    x = np.arange(40) * period / 40
+    y = amplitude * np.sin(2 * np.pi * x / period)
+    order = np.random.default_rng(7).permutation(len(x))
+    rms, slope = run_friction.profile_stats(x[order] + period, y[order], period)
+    assert rms == pytest.approx(amplitude / math.sqrt(2.0), rel=1e-12)
+    assert slope == pytest.approx(4 * amplitude / period, rel=1e-12)
