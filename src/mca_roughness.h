@@ -9,7 +9,7 @@
    the regularity d_m is the mean length of a regular piece) and its own
    amplitude A_mp, uniform in [A_m / 2, 3 A_m / 2], with a random sign;
    every piece starts and ends at a zero, so K_mu is continuous, and its
-   mean over every piece is 1.  Laid over [x0, x0 + L) of the box's x axis
+   mean over every piece is 1.  Laid over [x0, x0 + L) of an x axis
    (periodic: the last piece of each sinusoid fills the rest with whole
    periods, stretched).  An element's contact of length S reads the mean
    of K_mu over it, (Phi(x + S/2) - Phi(x - S/2)) / S with Phi the exact

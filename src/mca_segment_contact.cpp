@@ -111,11 +111,28 @@ void McaSegmentContact::coeff(int narg, char **arg)
   any = true;
 }
 
-double *McaSegmentContact::slip() const
+double *McaSegmentContact::dvector(const char *name) const
 {
   int flag, cols;
-  const int index = atom->find_custom(NAME, flag, cols);
+  const int index = atom->find_custom(name, flag, cols);
   return index < 0 || flag != 1 || cols != 0 ? nullptr : atom->dvector[index];
+}
+
+int *McaSegmentContact::set_flags() const
+{
+  int flag, cols;
+  const int index = atom->find_custom("mca_x0_set", flag, cols);
+  return index < 0 || flag != 0 || cols != 0 ? nullptr : atom->ivector[index];
+}
+
+double McaSegmentContact::reference_x(int i, int j, double t, const double *x0,
+                                      const int *set) const
+{
+  double **x = atom->x;
+  const double xi = set[i] ? x0[i] : x[i][0], xj = set[j] ? x0[j] : x[j][0];
+  double d = xj - xi;
+  if (domain->xperiodic) d -= domain->xprd * floor(d / domain->xprd + 0.5);
+  return xi + t * d;
 }
 
 void McaSegmentContact::init()
@@ -128,12 +145,24 @@ void McaSegmentContact::init()
     error->all(FLERR, "Pair mca: contact segments need newton on (a segment's forces on ghost "
                "elements are summed onto their owners)");
   if (!modify->get_fix_by_id(FIX_ID)) {
-    Fix *fix = modify->add_fix(fmt::format("{} all property/atom d_{}", FIX_ID, NAME));
+    Fix *fix = modify->add_fix(fmt::format("{} all property/atom d_mca_slip d_mca_x0 "
+                                           "i_mca_x0_set ghost yes", FIX_ID));
     fix->wd_section = 0;    // as the pair states: out of data files
   }
-  if (!slip())
-    error->all(FLERR, "Pair mca: fix {} is not the elements' tangential springs (fix "
-               "property/atom d_{}) the style makes: its ID is reserved", FIX_ID, NAME);
+  if (!dvector("mca_slip") || !dvector("mca_x0") || !set_flags())
+    error->all(FLERR, "Pair mca: fix {} is not the elements' tangential springs and reference "
+               "positions (fix property/atom d_mca_slip d_mca_x0 i_mca_x0_set) the style makes: "
+               "its ID is reserved", FIX_ID);
+  // the elements met for the first time: their reference x (ghosts take it at the setup)
+  double *x0 = dvector("mca_x0");
+  int *set = set_flags();
+  for (int i = 0; i < atom->nlocal; i++)
+    if (!set[i]) {
+      double unwrapped[3];
+      domain->unmap(atom->x[i], atom->image[i], unwrapped);
+      x0[i] = unwrapped[0];
+      set[i] = 1;
+    }
   const double p2e = 1.0 / force->nktv2p;
   for (int i = 1; i <= ntypes; i++)
     for (int j = 1; j <= ntypes; j++) {
@@ -171,7 +200,9 @@ void McaSegmentContact::compute(const NeighList *full, const double *stiffness, 
   double **torque = atom->torque;
   const double *radius = atom->radius;
   const int *type = atom->type;
-  double *xi = slip();
+  double *xi = dvector("mca_slip");
+  const double *x0 = dvector("mca_x0");
+  const int *x0_set = set_flags();
   std::vector<int> near;
   for (int ii = 0; ii < full->inum; ii++) {
     const int k = full->ilist[ii];
@@ -226,8 +257,7 @@ void McaSegmentContact::compute(const NeighList *full, const double *stiffness, 
     for (int c = 0; c < 2; c++) vrel[c] = v[k][c] - (1.0 - t) * v[bi][c] - t * v[bj][c];
     const double wseg = (1.0 - t) * omega[bi][2] + t * omega[bj][2];
     const double vt = e[0] * vrel[0] + e[1] * vrel[1] - rk * omega[k][2] - (h - rk) * wseg;
-    const double footx = x[bi][0] + t * (x[bj][0] - x[bi][0]);
-    const double limit = sl.dry_limit(fn, rough[at].mean(footx, s), s);
+    const double limit = sl.dry_limit(fn, rough[at].mean(reference_x(bi, bj, t, x0, x0_set), s), s);
     double ft;
     if (moving) {
       ft = sl.friction(xi[k], vt, dt, s * a, limit, s, work, espring);

@@ -9,11 +9,14 @@
    (closer than (1 + T)(R_i + R_j)) are a segment, and the segments form
    the polyline of their centres.  An element k of type J meets the
    polyline at its nearest point (McaSegmentLaw): normal force, friction
-   with the micro-roughness K_mu of the point's x (McaRoughness), shared
-   between the segment's two elements.  Elements of types I and J do not
-   link and have no other contact.  Each element k keeps its tangential
-   spring xi in fix property/atom d_mca_slip (it moves with k and goes into
-   restart files).  Needs newton on: the forces on ghost elements of the
+   with the micro-roughness K_mu of the point's reference x (McaRoughness),
+   shared between the segment's two elements.  Elements of types I and J do
+   not link and have no other contact.  Each element k keeps its tangential
+   spring xi (d_mca_slip), each element its reference x, its unwrapped x
+   when a run first met it (d_mca_x0, set in i_mca_x0_set), so that the
+   roughness moves with the surface's body: fix property/atom
+   MCA_SEGMENT_STATE (with ghosts; moves with the elements, goes into
+   restart files, not into data files).  Needs newton on: the forces on ghost elements of the
    surface are summed onto their owners.  Formulas: doc/pair_mca.rst.
 ------------------------------------------------------------------------- */
 
@@ -37,8 +40,7 @@ namespace ClusterDyn {
 
   class McaSegmentContact : protected Pointers {
    public:
-    static constexpr const char *FIX_ID = "MCA_SEGMENT_SLIP";
-    static constexpr const char *NAME = "mca_slip";
+    static constexpr const char *FIX_ID = "MCA_SEGMENT_STATE";
 
     explicit McaSegmentContact(LAMMPS *lmp) : Pointers(lmp) {}
     void allocate(int ntypes);
@@ -77,7 +79,11 @@ namespace ClusterDyn {
     std::vector<McaRoughness> rough;
 
     int index(int it, int jt) const { return it * (ntypes + 1) + jt; }
-    double *slip() const;
+    double *dvector(const char *name) const;
+    int *set_flags() const;
+    // the reference x of the foot at t of segment (i, j): its elements' reference x (their
+    // difference by the minimum image in a periodic x), or their x where not set yet
+    double reference_x(int i, int j, double t, const double *x0, const int *set) const;
     static void pack(const Given &g, double *v);
     static void unpack(const double *v, Given &g);
   };

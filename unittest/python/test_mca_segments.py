@@ -443,3 +443,22 @@ def test_normal_contact_conserves_energy_across_segments(substrate_moves):
         assert 1.5 < spread[0] / spread[1] < 3.0, spread
     else:
         assert 3.0 < spread[0] / spread[1] < 5.5, spread
+
+
+def test_roughness_moves_with_the_surface(tmp_path):
+    """K_mu is read at the contact's reference position (its elements' x when a run first met
+    them): the whole scene shifted by 7.3 along x between two runs slides on exactly as
+    before (the friction work of the second run equal to round-off), where a roughness laid
+    in the box's frame would be read 7.3 further on."""
+    script = drag_script("lj", 0.3, -0.01, "roughness 0.4 0.5 2.0 0.2 0.1 0.4 11").replace(
+        "thermo 100", "thermo 50")
+    speed = [line.split()[5] for line in script.splitlines()
+             if line.startswith("fix drag block move linear")][0]
+    refix = f"unfix drag\nfix drag block move linear {speed} NULL NULL units box\nrun 1000\n"
+    runs = []
+    for shift in ("", "displace_atoms all move 7.3 0 0 units box\n"):
+        out = run_lmp(tmp_path, script + "run 1000\n" + shift + refix)
+        rows = thermo_rows(out)
+        runs.append(np.diff(rows[:, 2]))    # friction work per 50 steps
+    assert np.std(runs[0]) > 0.05 * np.mean(runs[0])    # the roughness is felt
+    assert np.allclose(runs[0], runs[1], rtol=1e-8, atol=1e-14)
