@@ -15,8 +15,9 @@
    of K_mu over it, (Phi(x + S/2) - Phi(x - S/2)) / S with Phi the exact
    antiderivative: a sinusoid's swing falls as sin(pi S / 2 l) / (pi S /
    2 l) once S is beyond its half-period, and to zero as S grows past the
-   pieces, the review's fall of the oscillation with the element's size.  The random numbers are Park and Miller's minimal
-   standard (LAMMPS's RanPark), the same on every rank and machine.
+   pieces, the review's fall of the oscillation with the element's size.
+   The random numbers are Park and Miller's minimal standard (LAMMPS's
+   RanPark), the same on every rank and machine.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_CLUSTERDYN_MCA_ROUGHNESS_H
@@ -127,7 +128,8 @@ namespace ClusterDyn {
       for (const auto &sine : pieces) {
         if (sine.empty()) continue;
         const Piece &p = sine[find(sine, u)];
-        part += p.amplitude * p.half_period / M_PI * (1.0 - cos(M_PI * (u - p.start) / p.half_period));
+        const double phase = M_PI * (u - p.start) / p.half_period;
+        part += p.amplitude * p.half_period / M_PI * (1.0 - cos(phase));
       }
       return part;
     }

@@ -68,7 +68,8 @@ void McaSegmentContact::coeff(int narg, char **arg)
     seen.add(key);
     if (key == "viscous") {
       g.eta0 = number_arg(who, "viscous (eta0)", arg[i + 1], lmp);
-      if (g.eta0 < 0.0) error->all(FLERR, "{}: viscous (eta0) must be >= 0 (got {})", who, arg[i + 1]);
+      if (g.eta0 < 0.0)
+        error->all(FLERR, "{}: viscous (eta0) must be >= 0 (got {})", who, arg[i + 1]);
     } else if (key == "limit") {
       g.sigma0 = positive_arg(who, "limit (sigma0, the junctions' elastic limit)", arg[i + 1], lmp);
     } else {
@@ -95,7 +96,8 @@ void McaSegmentContact::coeff(int narg, char **arg)
                    arg[i + 1], arg[i + 4]);
       const double seed = integer_arg(who, "roughness seed", arg[i + 7], lmp);
       if (seed < 1 || seed > 2147483646)
-        error->all(FLERR, "{}: roughness seed must be a positive integer (got {})", who, arg[i + 7]);
+        error->all(FLERR, "{}: roughness seed must be a positive integer (got {})", who,
+                   arg[i + 7]);
       g.seed = static_cast<int>(seed);
     }
     i += 1 + count;
@@ -249,7 +251,8 @@ void McaSegmentContact::compute(const NeighList *full, const double *stiffness, 
     const int at = index(type[bi], kt);
     const McaSegmentLaw &sl = law[at];
     const double s = McaElement::unlinked_area(rk, rs, 2);
-    const double a = McaContact::series(stiffness[k], (1.0 - t) * stiffness[bi] + t * stiffness[bj]);
+    const double a =
+        McaContact::series(stiffness[k], (1.0 - t) * stiffness[bi] + t * stiffness[bj]);
     double enormal, espring = 0.0, work = 0.0;
     const double fn = McaSegmentLaw::normal(1.5 * s * a, h0, h, enormal);
     const double *n = best.n, *e = best.e;
@@ -340,7 +343,8 @@ void McaSegmentContact::write_restart(FILE *fp) const
 
 void McaSegmentContact::read_restart(FILE *fp)
 {
-  if (comm->me == 0) utils::sfread(FLERR, side.data(), sizeof(int), side.size(), fp, nullptr, error);
+  if (comm->me == 0)
+    utils::sfread(FLERR, side.data(), sizeof(int), side.size(), fp, nullptr, error);
   MPI_Bcast(side.data(), side.size(), MPI_INT, 0, world);
   for (Given &g : given) {
     double v[NGIVEN];

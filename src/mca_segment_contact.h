@@ -48,7 +48,10 @@ namespace ClusterDyn {
     void coeff(int narg, char **arg);
     bool active() const { return any; }
     // types it and jt meet by segments (either order)
-    bool between(int it, int jt) const { return side[index(it, jt)] != 0 || side[index(jt, it)] != 0; }
+    bool between(int it, int jt) const
+    {
+      return side[index(it, jt)] != 0 || side[index(jt, it)] != 0;
+    }
     // init_style(): the checks, the state, the roughness profiles over the box
     void init();
     // the cutoff a segment type pair needs (largest radii of the types; 0: not one)

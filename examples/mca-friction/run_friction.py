@@ -16,7 +16,7 @@ boundaries, the top row's profile before, after the first and after the last lap
 And friction3d.png, the 3D alternative (in.friction3d: an fcc block on a flat counterface, a
 large element or fix wall/gran): mu against sliding at two loads, a soft spring's drive.
 Runs in temporary folders (nothing is kept); two runs at a time.
-    /usr/bin/python3 run_friction.py            # about 2 minutes on two cores
+    /usr/bin/python3 run_friction.py            # about 70 s on two cores
     /usr/bin/python3 run_friction.py --quick --out /tmp/x   # reduced runs (the test's)"""
 import argparse
 import math
@@ -108,8 +108,8 @@ def other_scenes(quick):
 
 
 def runin_scene():
-    """The running-in (full run only, 45 s): the damage scene at twice its strength for LAPS
-    laps, the substrate's elements dumped at the start of the drag and after each lap."""
+    """The running-in (full run only, its longest scene): the damage scene at twice its
+    strength for LAPS laps, the substrate's elements dumped at the start of the drag and after each lap."""
     return {"running-in": dict(P=0.5, K=1.0, V=SPEED, d=1, br=3, mu0=MU0, rough=DAMAGE_ROUGH,
                                strength=RUNIN_STRENGTH, steps=LAPS * steps_for(LAP),
                                pdump=steps_for(LAP), every=100)}

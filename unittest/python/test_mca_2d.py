@@ -347,7 +347,8 @@ def test_uniaxial_yield_plateau(plane):
 
 def test_two_discs_weld_and_then_hold_in_tension():
     """Two unlinked discs pushed together until the contact's stress reaches the weld
-    pressure (overlap 0.06: 0.048) link where they are (pvector 2 counts one), and pulled back apart they pull on
+    pressure (overlap 0.06: 0.048) link where they are (pvector 2 counts one), and pulled back
+    apart they pull on
     each other (a link), where before they did not."""
     with session() as lmp:
         lmp.commands_list([

@@ -14,7 +14,7 @@ from its reduced runs (run_friction.py --quick, about 35 s on two cores).
   and over fix wall/gran slides at mu0 (Coulomb's law of each contact) within 5 % at two
   loads, the loads' mu within 1 % of each other; the pair's friction work on the large element
   is the integral of F_fr over the block's path within 2 %.
-- The running-in's profile measure (no run: the three laps take 45 s, the full run's only):
+- The running-in's profile measure (no run: the three laps are the full run's longest scene):
   the rms height and the mean |slope| of a sampled sine row, unsorted and across the period's
   wrap, are the closed forms a / sqrt(2) and 4 a / L."""
 import math

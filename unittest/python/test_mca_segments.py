@@ -137,11 +137,13 @@ def test_forces_and_torques_balance_on_any_geometry():
         lmp.commands_list(head)
         for x, y in points:
             lmp.command(f"create_atoms 2 single {x!r} {y!r} 0 units box")
-        lmp.commands_list(["group sub type 1", "displace_atoms sub random 0.05 0.05 0 99 units box"])
+        lmp.commands_list(["group sub type 1",
+                           "displace_atoms sub random 0.05 0.05 0 99 units box"])
         lmp.commands_list(finish("lj", coeff, [
             "velocity all create 0.02 5 loop geom", "group pts type 2",
             "velocity pts set 0.3 -0.1 0 sum yes", "set type 2 omega 0 0 0.5",
-            "fix move all nve/sphere disc", "timestep 0.01", "pair_coeff 1 1 young 1.0 poisson 0.3 link no",
+            "fix move all nve/sphere disc", "timestep 0.01",
+            "pair_coeff 1 1 young 1.0 poisson 0.3 link no",
             "pair_coeff 2 2 young 1.0 poisson 0.3 link no"]))
         turned = 0.0
         for _ in range(30):
