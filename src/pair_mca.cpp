@@ -442,6 +442,15 @@ void PairMCA::read_restart_settings(FILE *fp)
   state.read_restart(fp);
 }
 
+// the materials per type; a pair of types that meets by segments needs the keyword pair ij
+void PairMCA::write_data(FILE *fp)
+{
+  types.write_data(fp);
+  if (segments.active() && comm->me == 0)
+    error->warning(FLERR, "Pair mca: write_data keeps 'pair_coeff I J segments' only with the "
+                   "keyword pair ij");
+}
+
 // one line per type pair: the segment law where two types meet by segments, else the material
 // or the link flag
 void PairMCA::write_data_all(FILE *fp)

@@ -56,7 +56,7 @@ namespace ClusterDyn {
     void read_restart(FILE *) override;
     void write_restart_settings(FILE *) override;
     void read_restart_settings(FILE *) override;
-    void write_data(FILE *fp) override { types.write_data(fp); }
+    void write_data(FILE *fp) override;
     void write_data_all(FILE *fp) override;
     void init_list(int id, NeighList *ptr) override;
     void transfer_history(double *, double *, int, int) override;

@@ -464,3 +464,13 @@ def test_roughness_moves_with_the_surface(tmp_path):
         runs.append(np.diff(rows[:, 2]))    # friction work per 50 steps
     assert np.std(runs[0]) > 0.05 * np.mean(runs[0])    # the roughness is felt
     assert np.allclose(runs[0], runs[1], rtol=1e-8, atol=1e-14)
+
+
+def test_write_data_without_pair_ij_warns(tmp_path):
+    """A data file's per-type Pair Coeffs cannot hold a pair of types: write_data without
+    'pair ij' says that the segments are left out."""
+    head, coeff = substrate("lj")
+    script = "\n".join([f"plugin load {PLUGIN}", *head, *finish("lj", coeff), "run 0",
+                        "write_data plain.data", ""])
+    out = run_lmp(tmp_path, script)
+    assert "write_data keeps 'pair_coeff I J segments' only with the keyword pair ij" in out
