@@ -73,6 +73,18 @@ def run_lmp(tmp_path, script, nprocs=1, name="in.test", env=None, args=()):
     return out.stdout
 
 
+def worst_energy_error(lmp, dt, chunks, span, variable="etot"):
+    """After a run 0: the largest |E - E0| of the equal-style variable over `chunks` runs of
+    span/dt steps each (velocity Verlet's energy error, for its dt^2 scaling)."""
+    lmp.command("run 0")
+    e0 = lmp.extract_variable(variable)
+    worst = 0.0
+    for _ in range(chunks):
+        lmp.command(f"run {int(round(span / dt))} pre no post no")
+        worst = max(worst, abs(lmp.extract_variable(variable) - e0))
+    return worst, e0
+
+
 def thermo_rows(stdout):
     """The rows of the last thermo block (after the last header starting with 'Step'), as an
     array."""

@@ -11,7 +11,7 @@ import math
 
 import numpy as np
 import pytest
-from conftest import PLUGIN, run_lmp, session, thermo_rows
+from conftest import PLUGIN, run_lmp, session, thermo_rows, worst_energy_error
 
 TRIANGULAR = math.pi / math.sqrt(12.0)
 # an element radius and Young's modulus of each unit style's order
@@ -182,12 +182,7 @@ def test_energy_conservation_dt2():
             # the spheres' inertia 2/5 m R^2, which compute erotate/sphere counts
             script = script.replace("nve/sphere disc", "nve/sphere")
             lmp.commands_string(script.replace(f"plugin load {PLUGIN}\n", ""))
-            lmp.command("run 0")
-            e0 = lmp.extract_variable("etot")
-            worst = 0.0
-            for _ in range(20):
-                lmp.command(f"run {int(round(0.4 / dt))} pre no post no")
-                worst = max(worst, abs(lmp.extract_variable("etot") - e0))
+            worst, e0 = worst_energy_error(lmp, dt, 20, 0.4)
             spread.append(worst / e0)
     assert spread[0] < 1e-2
     for coarse, fine in zip(spread, spread[1:]):
@@ -237,16 +232,19 @@ def test_restart_continues_bit_identically(tmp_path):
     assert np.array_equal(straight, final(tmp_path))
 
 
+# two unit discs 0.1 apart (unlinked at the setup)
+TWO_DISCS = ["units lj", "dimension 2", "atom_style sphere", "boundary p p p",
+             "comm_modify vel yes", "region box block -5 5 -5 5 -0.5 0.5", "create_box 1 box",
+             "create_atoms 1 single 0 0 0", "create_atoms 1 single 1.1 0 0",
+             "set group all diameter 1.0", "neighbor 0.2 bin"]
+
+
 def test_unlinked_pair_pushes_through_the_hexagon_side():
     """Two discs apart at the setup: no link; pushed together by 0.05 they repel with
     S_u a (r - 2R), S_u = 2 R / sqrt(3) (times the unit thickness), a = G / R."""
     r, g = 0.5, 0.4
     with session() as lmp:
-        lmp.commands_list([
-            "units lj", "dimension 2", "atom_style sphere", "boundary p p p",
-            "comm_modify vel yes", "region box block -5 5 -5 5 -0.5 0.5", "create_box 1 box",
-            "create_atoms 1 single 0 0 0", "create_atoms 1 single 1.1 0 0",
-            "set group all diameter 1.0", "neighbor 0.2 bin",
+        lmp.commands_list(TWO_DISCS + [
             "pair_style mca fraction 0.9 plane stress", f"pair_coeff 1 1 bulk 1.0 shear {g}",
             "run 0", "group two id 2", "displace_atoms two move -0.15 0 0 units box",
             "run 0"])
@@ -348,14 +346,9 @@ def test_uniaxial_yield_plateau(plane):
 def test_two_discs_weld_and_then_hold_in_tension():
     """Two unlinked discs pushed together until the contact's stress reaches the weld
     pressure (overlap 0.06: 0.048) link where they are (pvector 2 counts one), and pulled back
-    apart they pull on
-    each other (a link), where before they did not."""
+    apart they pull on each other (a link), where before they did not."""
     with session() as lmp:
-        lmp.commands_list([
-            "units lj", "dimension 2", "atom_style sphere", "boundary p p p",
-            "comm_modify vel yes", "region box block -5 5 -5 5 -0.5 0.5", "create_box 1 box",
-            "create_atoms 1 single 0 0 0", "create_atoms 1 single 1.1 0 0",
-            "set group all diameter 1.0", "neighbor 0.2 bin",
+        lmp.commands_list(TWO_DISCS + [
             "pair_style mca fraction 0.9 plane strain",
             "pair_coeff 1 1 bulk 1.0 shear 0.4 weld 0.03", "compute pw all pair mca",
             "run 0", "group two id 2",

@@ -14,7 +14,7 @@ import math
 
 import numpy as np
 import pytest
-from conftest import PLUGIN, run_lmp, session, thermo_rows
+from conftest import PLUGIN, run_lmp, session, thermo_rows, worst_energy_error
 
 TRIANGULAR = math.pi / math.sqrt(12.0)
 # element radius, Young's modulus and time step of each unit style's order
@@ -431,12 +431,8 @@ def test_normal_contact_conserves_energy_across_segments(substrate_moves):
                 f"fix move {'all' if substrate_moves else 'pts'} nve/sphere",
                 "compute rot all erotate/sphere", "variable etot equal pe+ke+c_rot",
                 f"timestep {dt}"])
-            e0 = lmp.extract_variable("etot")
             k0 = lmp.get_thermo("ke")
-            worst = 0.0
-            for _ in range(40):
-                lmp.command(f"run {int(round(0.5 / dt))} pre no post no")
-                worst = max(worst, abs(lmp.extract_variable("etot") - e0))
+            worst, _ = worst_energy_error(lmp, dt, 40, 0.5)
             x, _, _, ty = arrays(lmp)
         assert x[ty == 2, 0][0] > 2.2 + 3.0    # it crossed several segments
         spread.append(worst / k0)

@@ -15,7 +15,7 @@ import sys
 import numpy as np
 import pytest
 from conftest import (MCA_FCC_BLOCK, OK, PLUGIN, InputTable, check_input, last_thermo, run_lmp,
-                      scene_mca, session)
+                      scene_mca, session, worst_energy_error)
 from lammps import LMP_STYLE_ATOM, LMP_STYLE_GLOBAL, LMP_TYPE_ARRAY, LMP_TYPE_VECTOR
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -251,12 +251,7 @@ def test_energy_conservation_dt2():
             lmp.command("clear")
             lmp.command(f"plugin load {PLUGIN}")
             lmp.commands_string(MCA_FCC_BLOCK.format(newton="on", dt=dt))
-            lmp.command("run 0")
-            e0 = lmp.extract_variable("etot")
-            worst = 0.0
-            for _ in range(20):
-                lmp.command(f"run {int(round(0.4 / dt))} pre no post no")
-                worst = max(worst, abs(lmp.extract_variable("etot") - e0))
+            worst, e0 = worst_energy_error(lmp, dt, 20, 0.4)
             spread.append(worst / e0)
     assert spread[0] < 1e-2
     for coarse, fine in zip(spread, spread[1:]):
