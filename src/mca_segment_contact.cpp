@@ -248,8 +248,9 @@ void McaSegmentContact::compute(const NeighList *full, const double *stiffness, 
       xi[k] = 0.0;
       continue;
     }
-    const int at = index(type[bi], kt);
-    const McaSegmentLaw &sl = law[at];
+    // a segment of two surface types: each law parameter and K_mu interpolated along it
+    const int ai = index(type[bi], kt), aj = index(type[bj], kt);
+    const McaSegmentLaw sl = McaSegmentLaw::between(law[ai], law[aj], t);
     const double s = McaElement::unlinked_area(rk, rs, 2);
     const double a =
         McaContact::series(stiffness[k], (1.0 - t) * stiffness[bi] + t * stiffness[bj]);
@@ -260,7 +261,10 @@ void McaSegmentContact::compute(const NeighList *full, const double *stiffness, 
     for (int c = 0; c < 2; c++) vrel[c] = v[k][c] - (1.0 - t) * v[bi][c] - t * v[bj][c];
     const double wseg = (1.0 - t) * omega[bi][2] + t * omega[bj][2];
     const double vt = e[0] * vrel[0] + e[1] * vrel[1] - rk * omega[k][2] - (h - rk) * wseg;
-    const double limit = sl.dry_limit(fn, rough[at].mean(reference_x(bi, bj, t, x0, x0_set), s), s);
+    const double xref = reference_x(bi, bj, t, x0, x0_set);
+    const double kmu = ai == aj ? rough[ai].mean(xref, s)
+                                : (1.0 - t) * rough[ai].mean(xref, s) + t * rough[aj].mean(xref, s);
+    const double limit = sl.dry_limit(fn, kmu, s);
     double ft;
     if (moving) {
       ft = sl.friction(xi[k], vt, dt, s * a, limit, s, work, espring);

@@ -40,6 +40,17 @@ namespace ClusterDyn {
     double eta0 = 0.0;      // viscous friction, stress per velocity (energy/volume units)
     double sigma0 = 0.0;    // elastic limit of the junctions (0: no cap)
 
+    // the law at t of a segment whose ends have laws li (t = 0) and lj (t = 1): mu0 and eta0
+    // interpolated, sigma0 by its inverse (no limit: 0), so that the contact does not jump
+    // where it passes from one end to the other
+    static McaSegmentLaw between(const McaSegmentLaw &li, const McaSegmentLaw &lj, double t)
+    {
+      const double soft = (1.0 - t) * (li.sigma0 > 0.0 ? 1.0 / li.sigma0 : 0.0) +
+          t * (lj.sigma0 > 0.0 ? 1.0 / lj.sigma0 : 0.0);
+      return {(1.0 - t) * li.mu0 + t * lj.mu0, (1.0 - t) * li.eta0 + t * lj.eta0,
+              soft > 0.0 ? 1.0 / soft : 0.0};
+    }
+
     // the segment's point nearest to xk (2d: x, y); t in [0, 1]; returns h
     struct Foot {
       double t = 0.0, h = 0.0, n[2] = {0.0, 0.0}, e[2] = {0.0, 0.0};

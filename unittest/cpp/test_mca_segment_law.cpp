@@ -1,4 +1,5 @@
 // McaSegmentLaw (mca_segment_law.h, doc/pair_mca.rst "Contact segments and micro-roughness"):
+// a segment of two surface types interpolated along it;
 // the nearest point of a segment, the rest height sqrt(3)/2 (R_k + R_s), the normal force as
 // the gradient of its energy (finite differences over the three elements), the dry limit
 // (Coulomb with K_mu, capped by the junction's shear strength) and the tangential spring's
@@ -110,4 +111,25 @@ TEST(McaSegmentLaw, ViscousPartOpposesTheSlideAndDissipates)
   const double force = law.friction(xi, vt, dt, 1.0, 0.0, s, work, energy);
   EXPECT_NEAR(force, -3.0 * s * vt, 1e-15);
   EXPECT_NEAR(work, 3.0 * s * vt * vt * dt, 1e-15);
+}
+
+TEST(McaSegmentLaw, TwoSurfaceTypesInterpolateAlongTheSegment)
+{
+  const McaSegmentLaw li{0.2, 1.0, 0.0}, lj{0.6, 3.0, 4.0};
+  const McaSegmentLaw at0 = McaSegmentLaw::between(li, lj, 0.0);
+  const McaSegmentLaw mid = McaSegmentLaw::between(li, lj, 0.25);
+  EXPECT_EQ(at0.mu0, li.mu0);
+  EXPECT_EQ(at0.eta0, li.eta0);
+  EXPECT_EQ(at0.sigma0, li.sigma0);
+  EXPECT_NEAR(mid.mu0, 0.3, 1e-15);
+  EXPECT_NEAR(mid.eta0, 1.5, 1e-15);
+  // the junction's limit by its inverse, none counting as infinite: 1 / (0.25 / 4) = 16,
+  // which grows without bound towards the end that has none
+  EXPECT_NEAR(mid.sigma0, 16.0, 1e-13);
+  EXPECT_GT(McaSegmentLaw::between(li, lj, 1e-6).sigma0, 1e6);
+  const McaSegmentLaw both{0.2, 1.0, 2.0};
+  EXPECT_NEAR(McaSegmentLaw::between(both, lj, 0.5).sigma0, 1.0 / 0.375, 1e-13);
+  // the same segment seen from its other end: t -> 1 - t
+  const McaSegmentLaw back = McaSegmentLaw::between(lj, li, 0.75);
+  EXPECT_NEAR(back.mu0, mid.mu0, 1e-15);
 }

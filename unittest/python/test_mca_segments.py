@@ -472,3 +472,35 @@ def test_write_data_without_pair_ij_warns(tmp_path):
     out = run_lmp(tmp_path, script)
     assert ("write_data keeps 'pair_coeff I J segments' only with the keyword pair ij" in out or
             "Use write_data with 'pair ij' option to store all pair coeffs" in out)
+
+
+def two_surface_types(nprocs=1, tmp_path=None):
+    """The flat drag (units lj, diameter 1) over a substrate whose elements alternate between
+    two surface types, mu0 0.2 and 0.4 against the block (type 3): the friction work per unit
+    distance over the load, once it slides."""
+    script = drag_script("lj", 0.2, -0.01)
+    for old, new in (("create_box 2 box", "create_box 3 box"),
+                     ("create_atoms 1 region sub\n",
+                      "create_atoms 1 region sub\nvariable alt atom floor(x)%2\n"
+                      "group alt variable alt\nset group alt type 2\n"),
+                     ("create_atoms 2 region lay", "create_atoms 3 region lay"),
+                     ("group block type 2", "group block type 3"),
+                     ("pair_coeff 1 2 segments 0.2 ",
+                      "pair_coeff 1 3 segments 0.2\npair_coeff 2 3 segments 0.4"),
+                     ("group sub type 1\n", "group sub type 1 2\n")):
+        assert old in script, old
+        script = script.replace(old, new)
+    out = run_lmp(tmp_path, script + "run 2000\n", nprocs=nprocs)
+    rows = thermo_rows(out)
+    late = rows[rows[:, 0] >= 1000]
+    return (late[-1, 2] - late[0, 2]) / (late[-1, 1] - late[0, 1]) / (6 * 0.01)
+
+
+def test_a_surface_of_two_types_interpolates_its_laws(tmp_path):
+    """Surface elements of two types (mu0 0.2 and 0.4) alternating under a sliding row: along
+    each segment the law is interpolated, so the row's mean coefficient is their mean, 0.3,
+    within 2 %; 2 ranks give the serial run (the interpolation does not depend on which end
+    the neighbour list names first)."""
+    one = two_surface_types(1, tmp_path)
+    assert one == pytest.approx(0.3, rel=0.02)
+    assert two_surface_types(2, tmp_path) == pytest.approx(one, rel=1e-9)
