@@ -85,6 +85,27 @@ def worst_energy_error(lmp, dt, chunks, span, variable="etot"):
     return worst, e0
 
 
+def energy_error_spread(script_for_dt, dts=(0.04, 0.02, 0.01)):
+    """The relative worst energy error of the input script_for_dt(dt) (its equal-style
+    variable etot) at each dt, in one session; velocity Verlet's falls as dt^2."""
+    spread = []
+    with session() as lmp:
+        for dt in dts:
+            lmp.command("clear")
+            load_plugin(lmp)
+            lmp.commands_string(script_for_dt(dt))
+            worst, e0 = worst_energy_error(lmp, dt, 20, 0.4)
+            spread.append(worst / e0)
+    return spread
+
+
+def assert_falls_as_dt2(spread, first=1e-2):
+    """The first error below `first`, each halving of dt dividing it by 3 to 5.5."""
+    assert spread[0] < first
+    for coarse, fine in zip(spread, spread[1:]):
+        assert 3.0 < coarse / fine < 5.5, spread
+
+
 def thermo_rows(stdout):
     """The rows of the last thermo block (after the last header starting with 'Step'), as an
     array."""

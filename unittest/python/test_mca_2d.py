@@ -11,7 +11,9 @@ import math
 
 import numpy as np
 import pytest
-from conftest import PLUGIN, run_lmp, session, thermo_rows, worst_energy_error
+from conftest import (PLUGIN, assert_falls_as_dt2, energy_error_spread, run_lmp, session,
+                      thermo_rows)
+from test_pair_mca import positions
 
 TRIANGULAR = math.pi / math.sqrt(12.0)
 # an element radius and Young's modulus of each unit style's order
@@ -172,26 +174,13 @@ thermo_modify norm no format float %.15g
 def test_energy_conservation_dt2():
     """A hot elastic 2d block: translational + rotational + elastic energy, its error falls
     as dt^2."""
-    spread = []
-    with session() as lmp:
-        for dt in (0.04, 0.02, 0.01):
-            lmp.command("clear")
-            lmp.command(f"plugin load {PLUGIN}")
-            script = BLOCK_2D.format(plugin=PLUGIN, newton="on", dt=dt, temp=1.0e-4)
-            script = script.replace(" yield 0.004 strength 0.006 friction 0.3", "")
-            # the spheres' inertia 2/5 m R^2, which compute erotate/sphere counts
-            script = script.replace("nve/sphere disc", "nve/sphere")
-            lmp.commands_string(script.replace(f"plugin load {PLUGIN}\n", ""))
-            worst, e0 = worst_energy_error(lmp, dt, 20, 0.4)
-            spread.append(worst / e0)
-    assert spread[0] < 1e-2
-    for coarse, fine in zip(spread, spread[1:]):
-        assert 3.0 < coarse / fine < 5.5, spread
-
-
-def final(out_dir):
-    data = np.loadtxt(out_dir / "final.txt", skiprows=9)
-    return data[np.argsort(data[:, 0])]
+    def script(dt):
+        text = BLOCK_2D.format(plugin=PLUGIN, newton="on", dt=dt, temp=1.0e-4)
+        text = text.replace(" yield 0.004 strength 0.006 friction 0.3", "")
+        # the spheres' inertia 2/5 m R^2, which compute erotate/sphere counts
+        text = text.replace("nve/sphere disc", "nve/sphere")
+        return text.replace(f"plugin load {PLUGIN}\n", "")
+    assert_falls_as_dt2(energy_error_spread(script))
 
 
 # hot enough that links yield, break and rub (pvector: broken links, plastic and friction work)
@@ -213,7 +202,7 @@ def test_two_ranks_give_the_serial_run(tmp_path, newton):
             "run 800\n" + DUMP, nprocs=2)
     broken, plastic, friction = thermo_rows(out)[-1][2:]
     assert broken > 1 and plastic > 0.0 and friction > 0.0
-    a, b = final(ref), final(par)
+    a, b = positions(ref), positions(par)
     assert np.abs(a[:, 3]).max() == 0.0    # in the plane
     assert np.abs(a[:, 1:3] - b[:, 1:3]).max() < 1e-10
     assert np.abs(a[:, 4] - b[:, 4]).max() <= 1e-10 * np.abs(a[:, 4]).max()
@@ -224,12 +213,12 @@ def test_restart_continues_bit_identically(tmp_path):
     (the plane and every pair's state travel)."""
     head = BLOCK_2D.format(plugin=PLUGIN, newton="on", dt=0.02, temp=3.0e-3)
     run_lmp(tmp_path, head + "run 400\nrun 400\n" + DUMP, name="in.straight")
-    straight = final(tmp_path)
+    straight = positions(tmp_path)
     run_lmp(tmp_path, head + "run 400\nwrite_restart half.rst\n", name="in.first")
     run_lmp(tmp_path, f"plugin load {PLUGIN}\nread_restart half.rst\ncomm_modify vel yes\n"
             "neighbor 0.2 bin\nfix move all nve/sphere disc\nfix plane all enforce2d\n"
             "timestep 0.02\nrun 400\n" + DUMP, name="in.second")
-    assert np.array_equal(straight, final(tmp_path))
+    assert np.array_equal(straight, positions(tmp_path))
 
 
 # two unit discs 0.1 apart (unlinked at the setup)

@@ -15,7 +15,7 @@ import sys
 import numpy as np
 import pytest
 from conftest import (MCA_FCC_BLOCK, OK, PLUGIN, InputTable, check_input, last_thermo, run_lmp,
-                      scene_mca, session, worst_energy_error)
+                      scene_mca, session, assert_falls_as_dt2, energy_error_spread)
 from lammps import LMP_STYLE_ATOM, LMP_STYLE_GLOBAL, LMP_TYPE_ARRAY, LMP_TYPE_VECTOR
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -245,17 +245,8 @@ def test_random_packing_moduli():
 
 def test_energy_conservation_dt2():
     """Translational + rotational + elastic energy: its error falls as dt^2."""
-    spread = []
-    with session() as lmp:
-        for dt in (0.04, 0.02, 0.01):
-            lmp.command("clear")
-            lmp.command(f"plugin load {PLUGIN}")
-            lmp.commands_string(MCA_FCC_BLOCK.format(newton="on", dt=dt))
-            worst, e0 = worst_energy_error(lmp, dt, 20, 0.4)
-            spread.append(worst / e0)
-    assert spread[0] < 1e-2
-    for coarse, fine in zip(spread, spread[1:]):
-        assert 3.0 < coarse / fine < 5.5, spread
+    assert_falls_as_dt2(energy_error_spread(
+        lambda dt: MCA_FCC_BLOCK.format(newton="on", dt=dt)))
 
 
 def positions(out_dir):
