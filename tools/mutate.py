@@ -129,8 +129,8 @@ MUTANTS = [
      "torque[k][2] -= (h - rk) * ft;",
      [PY + "test_mca_segments.py"], "k turns with the segment's arm"),
     ("pull-back tool (tools/pull_back.py)", "tools/pull_back.py",
-     "{0.5 * args.rho0 * args.c0 * du:.6g}",
-     "{args.rho0 * args.c0 * du:.6g}",
+     "0.5 * rho0 * c_bulk * (du + delta)",
+     "rho0 * c_bulk * (du + delta)",
      [PY + "test_pull_back_tool.py"], "the spall strength without its 1/2"),
 ]
 

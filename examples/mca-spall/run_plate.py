@@ -4,7 +4,9 @@ cellular automata (pair_style mca), peridynamics (pair_style peri/lps) and clust
 (examples/spall/in.spall with the aluminium clusters of the dusting paper, on the same plates:
 5 x 5 cells across).  For each method: the spall threshold (ensembles of 3 seeds, 1 m/s thermal
 start), the free-surface velocity history with its pull-back and the spall strength read from
-it (the analysis of examples/spall: 1/2 rho0 c0 dU), the target's fragments and the run time
+it (tools/pull_back.py: sigma_sp = 1/2 rho0 c_b (dU + delta), Kanel's correction delta for the
+elastic-plastic release of the yielding elements, one speed c_b = c_l and delta = 0 for the
+elastic elements, peridynamics and the clusters), the target's fragments and the run time
 per microsecond of physical time.  Writes comparison.md and plate.png; runs in runs/ (a
 finished run is read again; delete its folder to run it again).  About 25 minutes on one core.
 
@@ -20,11 +22,12 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.dirname(HERE))
 from runner import keep, loops, mean_sd, script  # noqa: E402
-from shock_records import XT, pull_back  # noqa: E402
+from shock_records import XT, spall_strength  # noqa: E402
 
 RHO, K, G, SIGMA = 2700.0, 75.5e9, 26.1e9, 1.2e9      # aluminium, in.plate's defaults
 YIELD = 0.3e9         # the elements' yield stress of the elastic-plastic variant (mca-yield)
 C_L = math.sqrt((K + 4.0 * G / 3.0) / RHO)             # longitudinal (uniaxial strain) speed
+C_B = math.sqrt(K / RHO)                                # bulk speed (the yielding elements)
 VD = 1451.0                                            # al-cluster-10um: sqrt(2D/m)
 FLYER = 10 * math.sqrt(2.0) * 1e-5                     # 10 cells of sqrt(2) a, a = 10 um
 SEEDS = [1, 2, 3]
@@ -98,10 +101,40 @@ def impact(method, v, seed, workdir):
         rear = max(ids, key=lambda i: x[parts[:, 0] == i].mean())
         r["rear"] = float(np.sum(parts[:, 0] == rear) / target.sum())
     t, u = np.loadtxt(os.path.join(workdir, "plate.visar"), usecols=(1, 2), unpack=True)
-    c0 = C_L if method != "cd" else r["c0"]
-    tp, vp, tm, vm = pull_back(t, u, 2 * FLYER / c0)
-    r.update(t=t.tolist(), u=u.tolist(), peak=[tp, vp], low=[tm, vm], c0l=c0)
+    r.update(t=t.tolist(), u=u.tolist(), **reading(method, r, t, u))
     return r
+
+
+def speeds(method, r):
+    """(c_l, c_b) of a method's target: the elements' and peridynamics' c_L, the clusters' own
+    c0 along the impact; the bulk speed below c_l only for the yielding elements (their release
+    is elastic-plastic)."""
+    c_long = C_L if method != "cd" else r["c0"]
+    return c_long, (C_B if method == "mca-yield" else c_long)
+
+
+def reading(method, r, t, u):
+    """The spall strength of a run's free-surface record (tools/pull_back.py): the peak, the
+    minimum, sigma_sp = 1/2 rho0 c_b (dU + delta) and delta; h = the flyer's thickness (the
+    target is twice as thick)."""
+    c_long, c_bulk = speeds(method, r)
+    try:
+        got = spall_strength(t, u, 2 * FLYER / c_bulk, rho0(method, r), c_long, c_bulk, FLYER)
+    except ValueError as err:          # no pull-back in the record: the peak, nothing read
+        return dict(peak=[float(t[np.argmax(u)]), float(np.max(u))], low=None, c0l=c_long,
+                    c_bulk=c_bulk, sigma=None, delta=None, refused=str(err))
+    return dict(peak=[got.t_peak, got.v_peak], low=[got.t_min, got.v_min], c0l=c_long,
+                c_bulk=c_bulk, sigma=got.sigma, delta=got.delta)
+
+
+def read_mean(runs, value, digits):
+    """mean ± sd of value(r) over the runs whose record tools/pull_back.py read, with how many
+    of them where not all; - where none."""
+    read = [value(r) for r in runs if r["sigma"] is not None]
+    if not read:
+        return "-"
+    text = mean_sd(read, digits) if len(read) > 1 else f"{read[0]:.{digits}f}"
+    return text + ("" if len(read) == len(runs) else f" ({len(read)} of {len(runs)} read)")
 
 
 TIMED = 400
@@ -176,7 +209,8 @@ def main():
                       "1.2-1.25 vd = 1741-1814 (examples/spall, 2 x 2 cells)") + " |")
     out += ["", "## Free-surface velocity, pull-back and spall strength", "",
             "| method | impact (m/s) | peak U_fs (m/s) | pull-back dU (m/s) | "
-            "1/2 rho0 c0 dU (GPa) | largest tension of the layers, virial (GPa) | "
+            "sigma_sp = 1/2 rho0 c_b (dU + delta) (GPa) | "
+            "largest tension of the layers, virial (GPa) | "
             "spalled layer (share of the target) | large fragments (mca, cd) | dust (share) |",
             "|---|---|---|---|---|---|---|---|---|"]
     shown = {}
@@ -185,19 +219,24 @@ def main():
         for v in [s for s in speeds if s >= top][:1] + [s for s in speeds if s >= 2 * top][:1] \
                 + ([400] if m == "cd" else []):
             runs = results[m][v]
-            dU = [r["peak"][1] - r["low"][1] for r in runs]
-            sigma = [0.5 * rho0(m, r) * r["c0l"] * d / 1e9 for r, d in zip(runs, dU)]
+            du = read_mean(runs, lambda r: r["peak"][1] - r["low"][1], 0)
+            sigma = read_mean(runs, lambda r: r["sigma"] / 1e9, 2)
             records = [xt(m, v, s, r) for s, r in zip(SEEDS, runs)]
             tension = (mean_sd([-np.nanmin(x.pressure) / 1e9 for x in records], 2)
                        if records[0].pressure is not None else "-")
             spalled = all(r["spall"] for r in runs)    # no pull-back without a spall
             out.append(f"| {m} | {v} | {mean_sd([r['peak'][1] for r in runs], 0)} | "
-                       f"{mean_sd(dU, 0) if spalled else '-'} | "
-                       f"{mean_sd(sigma, 2) if spalled else '-'} | "
+                       f"{du if spalled else '-'} | {sigma if spalled else '-'} | "
                        f"{tension} | {mean_sd([r['rear'] for r in runs], 2)} | "
                        f"{mean_sd([sum(f > 0.1 for f in r['fragments']) for r in runs], 1) if m != 'peri' else '-'} | "
                        f"{mean_sd([r['dust'] for r in runs], 3)} |")
             shown.setdefault(m, []).append((v, runs[0], records[0]))
+    out += ["", "sigma_sp by tools/pull_back.py (G. I. Kanel 1996, 2010): 1/2 rho0 c_b (dU + "
+            f"delta); mca-yield: c_b = sqrt(K/rho0) = {C_B:.0f} m/s, c_l = {C_L:.0f} m/s, h = "
+            "the flyer's 141 um, delta from the release's and the spall front's slopes; mca, peri "
+            f"(elastic) and cd (clusters): one speed, c_b = c_l ({C_L:.0f} m/s; cd its own c0), "
+            "delta = 0, 1/2 rho0 c_l dU.  The records smoothed over a tenth of the pulse "
+            "2 H / c_b."]
     out += ["", "## Run time", "",
             f"One impact at {TIMED} m/s without records, alone on one core, best of 3; the "
             "simulated time is the gap's closing and 4 target transit times.", "",
@@ -231,8 +270,9 @@ def plot(results, shown, thresholds):
             t0 = r["t"][next(i for i, u in enumerate(r["u"]) if u > 0.5 * r["peak"][1])]
             t = (np.array(r["t"]) - t0) * 1e9
             line, = ax.plot(t, r["u"], lw=0.9, label=f"{v} m/s")
-            ax.plot([(r["peak"][0] - t0) * 1e9, (r["low"][0] - t0) * 1e9],
-                    [r["peak"][1], r["low"][1]], "o", color=line.get_color(), ms=4)
+            dots = [r["peak"]] + ([r["low"]] if r["low"] else [])
+            ax.plot([(d[0] - t0) * 1e9 for d in dots], [d[1] for d in dots], "o",
+                    color=line.get_color(), ms=4)
         ax.set_xlim(-10, 80)
         ax.set_xlabel("time from the shock's arrival (ns)")
         ax.set_ylabel("free-surface velocity (m/s)")

@@ -17,7 +17,7 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.dirname(HERE))
 from runner import mean_sd, script  # noqa: E402
-from shock_records import pull_back  # noqa: E402
+from shock_records import spall_strength  # noqa: E402
 
 JS = [0, 100, 50, 20, 10]
 RATIOS = [round(1.1 + 0.1 * k, 1) for k in range(20)]
@@ -25,8 +25,10 @@ SEEDS = [1, 2, 3]
 
 
 def impact(ratio, seed, J):
-    """One impact: spall, the pull-back strength 1/2 rho0 c0 dU (rho0 of the clusters' fcc
-    lattice, c0 = v0 along [100]), the removed share of the impact energy, the dust share."""
+    """One impact: spall, the pull-back strength sigma_sp = 1/2 rho0 c_l dU (tools/pull_back.py
+    with one speed, a lattice of clusters: c_b = c_l, delta = 0; rho0 of the clusters' fcc
+    lattice, c_l = c0 = v0 along [100]), the removed share of the impact energy, the dust
+    share."""
     with tempfile.TemporaryDirectory() as workdir:
         with script(os.path.join(HERE, "in.spall"), {"ratio": ratio, "seed": seed, "J": J,
                                                      "records": 100}, workdir, "log.lammps") as lmp:
@@ -39,14 +41,14 @@ def impact(ratio, seed, J):
             r["dust"] = lmp.extract_compute("parts", 0, 1)[0] / lmp.extract_variable("ntarget")
             r["rho0"] = mass / (r["a"] ** 3 / np.sqrt(2.0))
         t, v = np.loadtxt(os.path.join(workdir, "spall.visar"), usecols=(1, 2), unpack=True)
-    tp, vp, tm, vm = pull_back(t, v, 2 * r["flyer"] * r["cell"] / r["c0"])
-    r["sigma"] = 0.5 * r["rho0"] * r["c0"] * (vp - vm)
+    r["sigma"] = spall_strength(t, v, 2 * r["flyer"] * r["cell"] / r["c0"], r["rho0"],
+                                r["c0"]).sigma
     return r
 
 
 def main():
     out = ["| damping | spall (runs of 3) from 1.1 vd | threshold / vd | pull-back strength "
-           "at the threshold (GPa) | energy removed / impact energy | dust / target |",
+           "sigma_sp = 1/2 rho0 c_l dU at the threshold (GPa) | energy removed / impact energy | dust / target |",
            "|---|---|---|---|---|---|"]
     for J in JS:
         runs = {ratio: [impact(ratio, s, J) for s in SEEDS] for ratio in RATIOS}
@@ -66,7 +68,8 @@ def main():
     out += ["", f"Aluminium clusters (al-cluster-10um, cut at 1.3 a), fcc [100], flyer 10 and "
             f"target 20 cells, 2 x 2 cells across; {len(SEEDS)} seeds per speed (1 m/s thermal "
             "start); only the speeds where some run spalled are listed; the threshold is the "
-            "lowest speed from which every run spalls."]
+            "lowest speed from which every run spalls; sigma_sp by tools/pull_back.py with one "
+            "speed (c_b = c_l = v0: Kanel's delta = 0), smoothed over a tenth of the pulse."]
     open(os.path.join(HERE, "damping.md"), "w").write("\n".join(out) + "\n")
     print("\n".join(out))
 

@@ -128,7 +128,7 @@ def hugoniot_section(points):
 
 def spall_section(impacts):
     out = ["## Plate impacts (in.spall, flyer 10 and target 20 cells, 4 x 4 across)", "",
-           "| metal | v (m/s) | damping J | spall (runs) | pull-back 1/2 rho0 c0 dU (GPa) | "
+           "| metal | v (m/s) | damping J | spall (runs) | pull-back sigma_sp = 1/2 rho0 c_l dU (GPa) | "
            "largest virial tension (GPa) | the metal's strength (GPa) | pull-back / strength |",
            "|---|---|---|---|---|---|---|---|"]
     for metal in METALS:

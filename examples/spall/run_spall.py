@@ -18,7 +18,7 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.dirname(HERE))
 from runner import mean_sd, script, tag  # noqa: E402
-from shock_records import XT, plot_xt, pull_back  # noqa: E402
+from shock_records import XT, plot_xt, spall_strength  # noqa: E402
 
 CASES = {  # label: in.spall settings
     "Morse, alpha a = 3.76 (aluminium clusters)": {"pot": "al-cluster-10um"},
@@ -64,9 +64,10 @@ SEEDS = [1, 2, 3]
 
 def record(ratio, seed, lam, root=os.path.join(HERE, "runs"), **var):
     """One impact with records (in a folder under root): the free-surface velocity history,
-    its pull-back dU and the spall strength 1/2 rho0 c0 dU (rho0 from the x-t density of the
-    target at the start, c0 = lam v0), next to the largest tension of the x-t virial
-    pressure."""
+    its pull-back dU and the spall strength sigma_sp = 1/2 rho0 c_l dU (tools/pull_back.py
+    with one speed: a lattice of clusters has no elastic-plastic release, c_b = c_l, delta = 0;
+    rho0 from the x-t density of the target at the start, c_l = lam v0), next to the largest
+    tension of the x-t virial pressure."""
     workdir = os.path.join(root, tag(dict(var, ratio=ratio, seed=seed)))
     os.makedirs(workdir, exist_ok=True)
     with script(os.path.join(HERE, "in.spall"), {"ratio": ratio, "seed": seed, **var}, workdir,
@@ -82,18 +83,18 @@ def record(ratio, seed, lam, root=os.path.join(HERE, "runs"), **var):
     t, v = np.loadtxt(os.path.join(workdir, "spall.visar"), usecols=(1, 2), unpack=True)
     c0 = lam * r["c0"]
     flyer_transit = 2 * r["flyer"] * r["cell"] / c0    # the compression pulse's duration
-    tp, vp, tm, vm = pull_back(t, v, flyer_transit)
     target = xt.x > (r["flyer"] + 2) * r["cell"]
     rho0 = np.nanmedian(xt.density[target, 0])
-    r.update(t=t, vfs=v, xt=xt, peak=(tp, vp), low=(tm, vm), rho0=rho0, c0l=c0,
-             sigma=0.5 * rho0 * c0 * (vp - vm), tension=-np.nanmin(xt.pressure))
+    got = spall_strength(t, v, flyer_transit, rho0, c0)
+    r.update(t=t, vfs=v, xt=xt, peak=(got.t_peak, got.v_peak), low=(got.t_min, got.v_min),
+             rho0=rho0, c0l=c0, sigma=got.sigma, tension=-np.nanmin(xt.pressure))
     return r
 
 
 def records_section(thresholds):
     out = ["## Spall records: free-surface velocity, pull-back and spall strength", "",
            "| lattice | impact / vd | spall (runs) | peak U_fs (m/s) | pull-back dU (m/s) | "
-           "spall strength 1/2 rho0 c0 dU (GPa) | largest virial tension (GPa) | "
+           "spall strength sigma_sp = 1/2 rho0 c_l dU (GPa) | largest virial tension (GPa) | "
            "1/2 rho0 c0 v at the threshold (GPa) |", "|---|---|---|---|---|---|---|---|"]
     shown = {}
     for label, settings, lam in RECORDS:
@@ -109,9 +110,10 @@ def records_section(thresholds):
                        f"{np.std(dU, ddof=1):.0f} | {mean_sd([r['sigma'] / 1e9 for r in runs])} | "
                        f"{mean_sd([r['tension'] / 1e9 for r in runs])} | {at_threshold:.2f} |")
     out += ["", f"Ensembles of {len(SEEDS)} seeds (1 m/s thermal start), mean ± sd; rho0 from "
-            "the x-t density of the target at the start, c0 = v0 (fcc [100]) or 1.06 v0 "
-            "(triangular), v0 from compute pair/params; the threshold from the sweep above "
-            "(2x2 cells).", ""]
+            "the x-t density of the target at the start, c_l = c0 = v0 (fcc [100]) or 1.06 v0 "
+            "(triangular), v0 from compute pair/params; sigma_sp by tools/pull_back.py with one "
+            "speed (a lattice of clusters: c_b = c_l, Kanel's delta = 0; smoothed over a tenth "
+            "of the pulse 2 H / c_l); the threshold from the sweep above (2x2 cells).", ""]
     plot_records(shown)
     return out
 
@@ -138,8 +140,8 @@ def plot_records(shown):
     plot_xt(fig, axes, r["xt"], "fcc [100], 1.5 vd: impact, release fans, spall plane")
     ax = fig.add_subplot(grid[0, 2])
     ax.axis("off")
-    ax.text(0, 0.5, "dots: peak and pull-back minimum\n(running mean of 5 records)\n\n"
-            "spall strength = 1/2 rho0 c0 (U_peak - U_min)", fontsize=10)
+    ax.text(0, 0.5, "dots: peak and pull-back minimum\n(running mean over a tenth of the pulse)\n\n"
+            "spall strength = 1/2 rho0 c_l (U_peak - U_min)\n(c_b = c_l: Kanel's delta = 0)", fontsize=10)
     fig.tight_layout()
     fig.savefig(os.path.join(HERE, "spall_records.png"), dpi=75)
     plt.close(fig)

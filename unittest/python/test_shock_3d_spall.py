@@ -126,7 +126,8 @@ def test_fragment_histograms_add_up_and_wall_piston_drives_at_u(tmp_path):
 def test_spall_strength_from_the_pull_back_matches_the_virial_tension(tmp_path):
     """The simulated VISAR record of a 1.3 vd impact (fcc [100], 4x4 cells): the free surface
     first flies at the impact speed (velocity doubling of a symmetric impact), and the spall
-    strength 1/2 rho0 c0 dU from its pull-back is the largest tension the x-t virial pressure
+    strength from its pull-back (tools/pull_back.py with one speed, a lattice of clusters:
+    sigma_sp = 1/2 rho0 c_l dU, Kanel's delta = 0) is the largest tension the x-t virial pressure
     shows, within 20 %."""
     r = run_spall.record(1.3, 1, 1.0, root=str(tmp_path), pot="al-cluster-10um", cells=4)
     assert r["large"] >= 2
