@@ -1,7 +1,8 @@
 #!/usr/bin/python3
-"""Plate impacts of aluminium and copper from handbook data (metal.mca), four ways side by side
-on the same plates (a flyer of 10 fcc cells of 14.14 um on a target of 20, 5 x 5 cells across,
-elements or particles of the same volume):
+"""Plate impacts of aluminium and copper from handbook data (the material cards
+potentials/al.shock and cu.shock, read by card()), four ways side by side on the same plates (a
+flyer of 10 fcc cells of 14.14 um on a target of 20, 5 x 5 cells across, elements or particles
+of the same volume):
   mca    movable cellular automata with the shock equation of state (in.plate);
   tlsph  LAMMPS's smd/tlsph: *EOS_SHOCK, *STRENGTH_LINEAR_PLASTIC and the pairwise-strain
          failure at sigma_sp / (K + 4G/3) (in.tlsph, one body as in.plate, sides held);
@@ -9,7 +10,10 @@ elements or particles of the same volume):
          sigma_sp / (K + 4G/3) (../mca-spall/in.plate: linear elastic, no equation of state);
   cd     cluster dynamics with the calibrated clusters of potentials/ (../spall/in.spall).
 For each: the shock speed in the target (x-t records) against c0 + s up, the free-surface
-peak, the pull-back and the spall strength 1/2 rho0 c0 dU read from it (tools/pull_back.py),
+peak, the pull-back and the spall strength read from it by tools/pull_back.py, Kanel's
+sigma_sp = 1/2 rho0 c_b (dU + delta) (mca and tlsph, elastic-plastic: c_b the bulk c0, c_l =
+sqrt((K + 4G/3)/rho0), h the flyer's thickness; peri, elastic: one speed c_L; cd, the
+clusters: one speed, their c0, delta = 0),
 whether and where it spalled, and the cost per particle-step (LAMMPS's timing breakdown).
 And the Hugoniot of the elements (in.piston: us at up = 0.2-2 km/s, the energy they hold
 against the piston's work) with the elastic precursor at up = 100 m/s.  Writes
@@ -29,15 +33,27 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.dirname(HERE))
 from runner import keep, lmp_command, loops  # noqa: E402
-from shock_records import XT, pull_back  # noqa: E402
+from shock_records import XT, spall_strength  # noqa: E402
 
 CELL = 1.0e-5 * math.sqrt(2.0)
 FLYER, TARGET = 10 * CELL, 20 * CELL
+CARDS = os.path.join(HERE, "..", "..", "potentials")
+
+
+def card(metal, folder=CARDS):
+    """The handbook data of a material card folder/<metal>.shock (SI), from its lines
+    `variable NAME equal NUMBER` (rho, c0, s, gamma, G, Y, spall, upmax) and `variable material
+    string "..."` (as name)."""
+    text = open(os.path.join(folder, f"{metal}.shock")).read()
+    data = {k: float(v) for k, v in re.findall(
+        r"^variable\s+(\w+)\s+equal\s+([-+0-9.eE]+)\s*(?:#.*)?$", text, re.M)}
+    data["name"] = re.search(r'^variable\s+material\s+string\s+"([^"]*)"', text, re.M).group(1)
+    return data
+
+
 METALS = {
-    "al": dict(name="aluminium 6061-T6", rho=2703.0, c0=5350.0, s=1.34, G=26.0e9, Y=0.29e9,
-               spall=1.2e9, vd=1170.0, pot="al-hugoniot-10um", speeds=[400, 1000, 2000]),
-    "cu": dict(name="copper OFHC", rho=8930.0, c0=3940.0, s=1.49, G=46.0e9, Y=0.2e9,
-               spall=1.4e9, vd=792.0, pot="cu-hugoniot-10um", speeds=[400, 1000]),
+    "al": dict(card("al"), vd=1170.0, pot="al-hugoniot-10um", speeds=[400, 1000, 2000]),
+    "cu": dict(card("cu"), vd=792.0, pot="cu-hugoniot-10um", speeds=[400, 1000]),
 }
 for m in METALS.values():
     m["K"] = m["rho"] * m["c0"] ** 2
@@ -143,9 +159,20 @@ def impact(method, metal, v, workdir, seed=0, extra=None):
                 pair=pair_time(os.path.join(workdir, "log.lammps")), spalled=spalled)
 
 
-def read_impact(metal, v, workdir, run):
+def speeds(method, metal):
+    """(c_l, c_b) of a method's target for tools/pull_back.py: the elastic-plastic metal of mca
+    and tlsph has both (Kanel's correction); peri's linear elastic target one, c_L; the
+    clusters one, their c0 (a metal-calibrated set's elastic and shock waves are one)."""
+    m = METALS[metal]
+    if method in ("mca", "tlsph"):
+        return m["cL"], m["c0"]
+    return (m["cL"], m["cL"]) if method == "peri" else (m["c0"], m["c0"])
+
+
+def read_impact(method, metal, v, workdir, run):
     """A finished impact's readings from its records: the shock speed in the target, the
-    free-surface peak, the pull-back's spall strength with c0 and with c_L, the spall plane."""
+    free-surface peak, the pull-back's spall strength (Kanel's sigma_sp, with the acoustic
+    values 1/2 rho0 c_b dU and 1/2 rho0 c_l dU beside), the spall plane."""
     if "stopped" in run:
         return run
     m = METALS[metal]
@@ -153,13 +180,15 @@ def read_impact(metal, v, workdir, run):
     xt = XT(os.path.join(workdir, "run.xt"), dt)
     record = np.loadtxt(os.path.join(workdir, "run.visar"))
     t, u = record[:, 1], record[:, 2]
+    c_long, c_bulk = speeds(method, metal)
     try:
-        tp, vp, tm, vm = pull_back(t, u, 2 * FLYER / m["c0"])
-        strength, elastic = (0.5 * m["rho"] * c * (vp - vm) for c in (m["c0"], m["cL"]))
+        got = spall_strength(t, u, 2 * FLYER / c_bulk, m["rho"], c_long, c_bulk, FLYER)
+        vp, strength, delta = got.v_peak, got.sigma, got.delta
+        bulk, elastic = got.acoustic_bulk, got.acoustic_long
     except ValueError:
-        vp, strength, elastic = float(np.max(u)), None, None
+        vp, strength, delta, bulk, elastic = float(np.max(u)), None, None, None, None
     return dict(run, us=front_speed(xt, v / 4, FLYER + 0.15 * TARGET, FLYER + 0.8 * TARGET),
-                peak=float(vp), strength=strength, elastic=elastic,
+                peak=float(vp), strength=strength, delta=delta, bulk=bulk, elastic=elastic,
                 depth=spall_plane(xt, m["rho"]) if run["spalled"] else None)
 
 
@@ -207,7 +236,7 @@ def main():
             for method in METHODS:
                 folder = os.path.join(RUNS, f"{method}-{metal}-{v}")
                 runs[(method, metal, v)] = read_impact(
-                    metal, v, folder,
+                    method, metal, v, folder,
                     keep(folder, lambda w, a=method, b=metal, c=v: impact(a, b, c, w)))
     sweep = {}
     for metal in METALS:
@@ -215,7 +244,7 @@ def main():
             for seed in SEEDS:
                 folder = os.path.join(RUNS, f"sweep-{metal}-{v}-{seed}")
                 sweep[(metal, v, seed)] = read_impact(
-                    metal, v, folder,
+                    "mca", metal, v, folder,
                     keep(folder, lambda w, a=metal, b=v, c=seed: impact("mca", a, b, w, c)))
     report = ["# Plate impacts of aluminium and copper: four methods side by side "
               "(written by run_shock.py)", ""]
@@ -243,7 +272,9 @@ def main():
     report += ["", "## The spall strength of the elements at their threshold", "",
                "Sweeps in 10 m/s of in.plate (mca), runs from rest and with seeds 1, 2 (1 m/s "
                "thermal start); the threshold is the lowest speed at which all spall; the "
-               "pull-back read there with c_L (the elastic release carries it) and with c0:", ""]
+               "pull-back read there by Kanel's sigma_sp = 1/2 rho0 c_b (dU + delta) (c_b the "
+               "bulk c0, c_l = sqrt((K + 4G/3)/rho0), h the flyer's 141 um; tools/pull_back.py), "
+               "with the plain acoustic values beside:", ""]
     rows = []
     for metal, m in METALS.items():
         done = {v: [sweep[(metal, v, seed)] for seed in SEEDS
@@ -253,25 +284,33 @@ def main():
                    if "stopped" in sweep[(metal, v, seed)]]
         at = next((v for v in SWEEP[metal] if done[v] and counts[v] == len(done[v])), None)
         runs_at = done[at] if at else []
+        kanel = [r["strength"] for r in runs_at if r["strength"]]
+        delta = [r["delta"] for r in runs_at if r["strength"]]
         elastic = [r["elastic"] for r in runs_at if r["elastic"]]
-        bulk = [r["strength"] for r in runs_at if r["strength"]]
+        bulk = [r["bulk"] for r in runs_at if r["bulk"]]
         rows.append([m["name"], ", ".join(f"{v}: {c}/{len(done[v])}" for v, c in counts.items())
                      + (f" (stopped with an error: {', '.join(stopped)})" if stopped else ""),
                      at, f"{2 * m['spall'] / (m['rho'] * m['cL']):.0f}",
+                     f"{np.mean(kanel) / 1e9:.2f} ± {np.std(kanel, ddof=1) / 1e9:.2f}"
+                     if len(kanel) > 1 else "-",
+                     f"{np.mean(delta):.0f}" if delta else "-",
                      f"{np.mean(elastic) / 1e9:.2f} ± {np.std(elastic, ddof=1) / 1e9:.2f}"
                      if len(elastic) > 1 else "-",
                      f"{np.mean(bulk) / 1e9:.2f} ± {np.std(bulk, ddof=1) / 1e9:.2f}"
                      if len(bulk) > 1 else "-", f"{m['spall'] / 1e9:.1f}"])
     report += [table(["metal", "spalled / finished runs per speed (m/s)", "threshold (m/s)",
                       "acoustic threshold 2 sigma_sp / (rho c_L) (m/s)",
-                      "pull-back 1/2 rho0 c_L dU (GPa)", "1/2 rho0 c0 dU (GPa)",
+                      "pull-back sigma_sp = 1/2 rho0 c_b (dU + delta) (GPa)", "delta (m/s)",
+                      "acoustic 1/2 rho0 c_l dU (GPa)", "acoustic 1/2 rho0 c_b dU (GPa)",
                       "strength given (GPa)"], rows)]
-    viscous = {(metal, b1): read_impact(metal, 400, os.path.join(RUNS, f"b1-{metal}-{b1}"), keep(
+    viscous = {(metal, b1): read_impact(
+        "mca", metal, 400, os.path.join(RUNS, f"b1-{metal}-{b1}"), keep(
         os.path.join(RUNS, f"b1-{metal}-{b1}"),
         lambda w, a=metal, b=b1: impact("mca", a, 400, w, extra=f"bulk_viscosity {b} 1.2")))
         for metal in METALS for b1 in B1}
     report += ["", "The bulk viscosity's linear coefficient b1 (b2 = 1.2) against the pull-back "
-               "1/2 rho0 c0 dU at 400 m/s (the default b1 = 0.06):", "",
+               "sigma_sp = 1/2 rho0 c_b (dU + delta) (GPa) at 400 m/s (the default b1 = 0.06):",
+               "",
                table(["metal"] + [f"b1 = {b1}" for b1 in B1],
                      [[m["name"]] + [fmt(None if viscous[(metal, b1)]["strength"] is None
                                          else viscous[(metal, b1)]["strength"] / 1e9, ".2f")
@@ -293,9 +332,20 @@ def main():
                              f"{1e6 * r['loop'] / (r['atoms'] * r['steps']):.2f}"])
     report += [table(["metal", "v (m/s)", "method", "particles",
                       "shock speed (m/s; / c0 + s v/2)", "free-surface peak / v",
-                      "pull-back 1/2 rho0 c0 dU (GPa)", "strength given (GPa)",
+                      "pull-back sigma_sp (GPa)", "strength given (GPa)",
                       "spall, depth below the rear face", "Pair us per particle-step",
                       "loop us per particle-step"], rows)]
+    report += ["", "The pull-back sigma_sp by tools/pull_back.py: 1/2 rho0 c_b (dU + delta) with "
+               "Kanel's correction for mca and tlsph (elastic-plastic: c_b the bulk c0, c_l = "
+               "sqrt((K + 4G/3)/rho0), h the flyer's thickness), 1/2 rho0 c_L dU for peri "
+               "(linear elastic: one speed) and 1/2 rho0 c0 dU for cd (the clusters: one speed, "
+               "their c0); the records smoothed over a tenth of the pulse 2 H / c_b." + "".join(
+                   f"  No spall pulse front after the minimum (u2' unknown, delta taken 0: a "
+                   f"lower bound): {', '.join(lacking)}." for lacking in [[
+                       f"{METALS[metal]['name']} {method} at {v} m/s"
+                       for (method, metal, v), r in runs.items()
+                       if method in ("mca", "tlsph") and r.get("strength") and not r["delta"]]]
+                   if lacking)]
     cost = {method: np.mean([1e6 * r["pair"] / (r["atoms"] * r["steps"])
                              for (a, _, _), r in runs.items() if a == method])
             for method in METHODS}
