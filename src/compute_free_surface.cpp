@@ -21,6 +21,7 @@
 #include "arg_values.h"
 #include "atom.h"
 #include "error.h"
+#include "keyword_set.h"
 #include "modify.h"
 #include "update.h"
 
@@ -42,10 +43,10 @@ ComputeFreeSurface::ComputeFreeSurface(LAMMPS *lmp, int narg, char **arg) :
                "[axis x|y|z] [face rear|front] [minsize N]", WHO);
   dust_id = arg[3];
   depth = positive_arg(WHO, "depth", arg[4], lmp);
+  KeywordSet given(lmp, WHO, Keywords::FREE_SURFACE);
   for (int i = 5; i < narg; i += 2) {
     const std::string key = arg[i];
-    if (key != "axis" && key != "face" && key != "minsize")
-      error->all(FLERR, "{}: unknown keyword '{}' (axis, face, minsize)", WHO, key);
+    given.add(key);
     if (i + 1 >= narg) error->all(FLERR, "{}: {} needs a value", WHO, key);
     const std::string val = arg[i + 1];
     if (key == "minsize") {

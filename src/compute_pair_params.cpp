@@ -56,13 +56,10 @@ ComputePairParams::ComputePairParams(LAMMPS *lmp, int narg, char **arg) :
     if (t < 1 || t > atom->ntypes)
       error->all(FLERR, "Compute pair/params: atom type {} is out of range 1-{}", t, atom->ntypes);
 
-  KeywordSet given(lmp, "Compute pair/params");
+  KeywordSet given(lmp, "Compute pair/params", Keywords::PAIR_PARAMS);
 
   for (int iarg = 5; iarg < narg;) {
     const std::string key = arg[iarg];
-    if (key != "mass" && key != "rc" && key != "lattice" && key != "u")
-      error->all(FLERR, "Compute pair/params: unknown keyword '{}' (expected mass, rc, lattice "
-                 "or u)", key);
     given.add(key);
     if (key != "u" && iarg + 1 >= narg)
       error->all(FLERR, "Compute pair/params: keyword {} needs a value", key);

@@ -19,7 +19,7 @@ DustSettings DustSettings::parse(LAMMPS *lmp, int narg, char **arg)
 {
   Error *error = lmp->error;
   DustSettings s;
-  KeywordSet given(lmp, "Compute dust");
+  KeywordSet given(lmp, "Compute dust", Keywords::DUST);
   for (int iarg = 3; iarg < narg; iarg++) {
     const std::string key = arg[iarg];
     given.add(key);
@@ -27,9 +27,6 @@ DustSettings DustSettings::parse(LAMMPS *lmp, int narg, char **arg)
       s.links = 1;
       continue;
     }
-    if (key != "cutoff" && key != "maxsize" && key != "rows")
-      error->all(FLERR, "Compute dust: unknown keyword '{}' (expected cutoff, maxsize, links "
-                 "or rows)", key);
     if (++iarg >= narg) error->all(FLERR, "Compute dust: keyword {} needs a value", key);
     const std::string value = arg[iarg];
     if (key == "cutoff") {

@@ -43,11 +43,10 @@ FixDescentNormalized::FixDescentNormalized(LAMMPS *lmp, int narg, char **arg) :
   step = positive_arg("Fix descent/normalized", "h", arg[4], lmp);
 
   int iarg = 5;
-  KeywordSet given(lmp, "Fix descent/normalized");
+  KeywordSet given(lmp, "Fix descent/normalized", Keywords::DESCENT_NORMALIZED);
   while (iarg < narg) {
     const std::string key = arg[iarg];
-    given.add(key);
-    const int nvalues = key == "inertia" ? 2 : 1;
+    const int nvalues = given.add(key).values;
     if (iarg + nvalues >= narg)
       error->all(FLERR, "Fix descent/normalized: keyword {} needs {} value{}", key, nvalues,
                  nvalues > 1 ? "s" : "");
@@ -61,7 +60,7 @@ FixDescentNormalized::FixDescentNormalized(LAMMPS *lmp, int narg, char **arg) :
       if (!(hmin >= 0.0 && hmin <= step))
         error->all(FLERR, "Fix descent/normalized: min Hmin must be in [0,h] (got {})",
                    arg[iarg + 1]);
-    } else if (key == "inertia") {
+    } else {
       const double m = number_arg("Fix descent/normalized", "inertia M", arg[iarg + 1], lmp);
       if (!(m >= 1.0))
         error->all(FLERR, "Fix descent/normalized: inertia M must be >= 1 (got {})",
@@ -74,9 +73,6 @@ FixDescentNormalized::FixDescentNormalized(LAMMPS *lmp, int narg, char **arg) :
       if (!(kinertia >= 0.0 && kinertia < 1.0))
         error->all(FLERR, "Fix descent/normalized: inertia K must be in [0,1) (got {})",
                    arg[iarg + 2]);
-    } else {
-      error->all(FLERR, "Fix descent/normalized: unknown keyword '{}' (expected decay, min or "
-                 "inertia)", key);
     }
     iarg += nvalues + 1;
   }

@@ -134,17 +134,16 @@ namespace ClusterDyn {
     //   [friction mu] [viscous eta] [weld P]   (words after I I)
     static McaMaterial read(const std::string &who, int narg, char **arg, LAMMPS *lmp)
     {
-      KeywordSet seen(lmp, who);
+      KeywordSet seen(lmp, who, Keywords::MCA_MATERIAL);
       double k = -1.0, g = -1.0, e = -1.0, nu = 2.0;
       bool viscosity_given = false, hourglass_given = false;
       McaMaterial m;
       for (int i = 0; i < narg;) {
         const std::string key = arg[i];
-        const int count = values_of(key);
-        if (i + count >= narg && count > 0)
+        const int count = seen.add(key).values;
+        if (i + count >= narg)
           lmp->error->all(FLERR, "{}: {} needs {}", who, key,
                           count > 1 ? fmt::format("{} values", count) : std::string("a value"));
-        seen.add(key);
         const char *val = arg[i + 1 < narg ? i + 1 : i];
         if (key == "bulk") k = positive_arg(who, "bulk modulus K", val, lmp);
         else if (key == "shear") g = positive_arg(who, "shear modulus G", val, lmp);
@@ -179,10 +178,7 @@ namespace ClusterDyn {
           if (!(nu > -1.0 && nu < 0.5))
             lmp->error->all(FLERR, "{}: Poisson's ratio nu must lie in (-1, 0.5) (got {})", who,
                             val);
-        } else
-          lmp->error->all(FLERR, "{}: unknown keyword '{}' (expected bulk K shear G, young E "
-                          "poisson nu, or shock rho0 c0 s Gamma0 shear G; strength, damage, "
-                          "yield, hardening, friction, viscous, weld, bulk_viscosity, hourglass)", who, key);
+        }
         i += 1 + count;
       }
       if (m.shock()) {
@@ -190,6 +186,11 @@ namespace ClusterDyn {
           lmp->error->all(FLERR, "{}: shock gives the bulk modulus K = rho0 c0^2: give shear G "
                           "with it, not bulk, young or poisson", who);
         if (g < 0.0) lmp->error->all(FLERR, "{}: shock needs shear G", who);
+        if (m.hourglass == 0.0)
+          lmp->error->all(FLERR, "{}: hourglass must be > 0 with shock (got 0): without the "
+                          "hourglass spring alternate planes of elements run through each other "
+                          "(the pressure forces do not resist that mode); give H in (0, 5], "
+                          "default 1", who);
         k = m.rho0 * m.c0 * m.c0 * lmp->force->mvv2e * lmp->force->nktv2p;
       } else if (viscosity_given || hourglass_given)
         lmp->error->all(FLERR, "{}: {} needs shock (the equation of state it stabilises)", who,
@@ -217,16 +218,6 @@ namespace ClusterDyn {
     }
 
    private:
-    // the values a keyword takes (0: not a keyword)
-    static int values_of(const std::string &key)
-    {
-      if (key == "shock") return 4;
-      if (key == "bulk_viscosity") return 2;
-      for (const char *k : {"bulk", "shear", "young", "poisson", "strength", "damage", "yield",
-                            "hardening", "friction", "viscous", "weld", "hourglass"})
-        if (key == k) return 1;
-      return 0;
-    }
     // a coefficient of a numerical term: 0 to most (beyond it the explicit step is unstable)
     static double bounded(const std::string &who, const char *name, const char *val, double most,
                           LAMMPS *lmp)

@@ -57,15 +57,12 @@ void McaSegmentContact::coeff(int narg, char **arg)
   g.mu0 = number_arg(who, "mu0 (dry friction coefficient)", arg[3], lmp);
   if (g.mu0 < 0.0 || g.mu0 > 1.0e6)
     error->all(FLERR, "{}: mu0 (dry friction coefficient) must be >= 0 (got {})", who, arg[3]);
-  KeywordSet seen(lmp, who);
+  KeywordSet seen(lmp, who, Keywords::MCA_SEGMENTS);
   for (int i = 4; i < narg;) {
     const std::string key = arg[i];
-    const int count = key == "roughness" ? 7 : (key == "viscous" || key == "limit" ? 1 : 0);
-    if (count == 0)
-      error->all(FLERR, "{}: unknown keyword '{}' (expected viscous, limit, roughness)", who, key);
+    const int count = seen.add(key).values;
     if (i + count >= narg)
       error->all(FLERR, "{}: {} needs {} value{}", who, key, count, count > 1 ? "s" : "");
-    seen.add(key);
     if (key == "viscous") {
       g.eta0 = number_arg(who, "viscous (eta0)", arg[i + 1], lmp);
       if (g.eta0 < 0.0)

@@ -41,14 +41,11 @@ namespace ClusterDyn {
     {
       const std::string who = "Pair mca";
       McaSettings s;
-      KeywordSet seen(lmp, who);
+      KeywordSet seen(lmp, who, Keywords::MCA_STYLE);
       for (int i = 0; i < narg; i += 2) {
         const std::string key = arg[i];
-        if (key != "fraction" && key != "tolerance" && key != "manybody" && key != "plane")
-          lmp->error->all(FLERR, "{}: unknown keyword '{}' (expected fraction, tolerance, "
-                          "manybody, plane)", who, key);
-        if (i + 1 >= narg) lmp->error->all(FLERR, "{}: {} needs a value", who, key);
         seen.add(key);
+        if (i + 1 >= narg) lmp->error->all(FLERR, "{}: {} needs a value", who, key);
         const char *val = arg[i + 1];
         if (key == "fraction") {
           s.fraction = positive_arg(who, "fraction", val, lmp);

@@ -39,6 +39,7 @@ namespace ClusterDyn {
     }
 
     const std::vector<McaMaterial> &as_given() const { return material; }
+    bool has_material(int itype) const { return material_set[itype]; }
     const std::vector<McaMaterial> &scaled() const { return in_energy; }
     // a material breaks, damages, yields or welds
     bool responds() const;

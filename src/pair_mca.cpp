@@ -38,7 +38,7 @@ using C = McaContact;
 
 PairMCA::PairMCA(LAMMPS *lmp) :
     PairColumnExchange(lmp), types(lmp), guard(lmp), plasticity(lmp, *this), manybody(lmp, *this), stress(lmp, *this),
-    eos(lmp, *this), state(lmp, this, "Pair mca", C::NVALUES, NWORK), tracks_changes(false), linking(lmp, *this), segments(lmp), full(nullptr),
+    eos(lmp, *this), state(lmp, this, "Pair mca", C::NVALUES, NWORK), tracks_changes(false), linking(lmp, *this), segments(lmp), report(lmp), full(nullptr),
     stiffness(nullptr), hourglass(nullptr), nmax(0)
 {
   single_enable = 0;
@@ -373,6 +373,7 @@ void PairMCA::init_style()
   stress.init(setting.fraction);
   plasticity.init(types.as_given(), setting.plane == McaSettings::STRAIN);
   segments.init();
+  report.print(types, setting.fraction);
   neighbor->add_request(this, NeighConst::REQ_HISTORY);
   if (segments.active()) neighbor->add_request(this, NeighConst::REQ_FULL)->set_id(1);
   state.init();

@@ -30,6 +30,7 @@ PairStyle(mca,PairMCA);
 #include "mca_linking.h"
 #include "mca_pair_tally.h"
 #include "mca_manybody.h"
+#include "mca_material_report.h"
 #include "mca_pair_walk.h"
 #include "mca_plasticity.h"
 #include "mca_segment_contact.h"
@@ -87,6 +88,7 @@ namespace ClusterDyn {
     bool tracks_changes;                  // the many-body term follows breaking, damage, flow
     McaLinking linking;
     McaSegmentContact segments;           // two bodies' contact by the method of segments (2d)
+    McaMaterialReport report;             // the materials' derived numbers in the log
     NeighList *full;                      // its full list (id 1)
     double *stiffness;                    // per atom: the half stiffness a_i = 2 G_i / R_i
     double **hourglass;                   // and of its hourglass spring: 2 H (K + 4G/3) / R_i,

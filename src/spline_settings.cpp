@@ -74,15 +74,13 @@ SplineSettings SplineSettings::parse(LAMMPS *lmp, const char *style, bool has_in
 
   // keywords after the tail
   int relink_set = -1;
-  KeywordSet given(lmp, fmt::format("Pair style {}", style));
+  KeywordSet given(lmp, fmt::format("Pair style {} (after tail {})", style, name),
+                   Keywords::SPLINE_STYLE);
   while (iarg < narg) {
     const std::string key = arg[iarg];
     given.add(key);
     if (key == "start")
       error->all(FLERR, "Pair style {}: start Rs must come right after lagunov Rc, once", style);
-    if (key != "chain" && key != "link" && key != "relink")
-      error->all(FLERR, "Pair style {}: unknown keyword '{}' after tail {} (expected chain, link "
-                 "or relink{})", style, key, name, name == "lagunov" ? " or start" : "");
     if (iarg + 1 >= narg) error->all(FLERR, "Pair style {}: keyword {} needs a value", style, key);
     if (key == "chain") {
       const double n = integer_arg(fmt::format("Pair style {}", style), "chain N", arg[iarg + 1],
@@ -118,13 +116,10 @@ SplineSettings::PairKeywords SplineSettings::parse_pair_keywords(LAMMPS *lmp, co
 {
   Error *error = lmp->error;
   PairKeywords k;
-  KeywordSet given(lmp, fmt::format("Pair {} pair_coeff", style));
+  KeywordSet given(lmp, fmt::format("Pair {} pair_coeff", style), Keywords::SPLINE_COEFF);
   for (int iarg = 0; iarg < narg; iarg += 2) {
     const std::string key = arg[iarg];
     given.add(key);
-    if (key != "kappa" && key != "rc" && key != "rs")
-      error->all(FLERR, "Pair {}: unknown pair_coeff keyword '{}' (expected kappa, rc or rs)",
-                 style, key);
     if (iarg + 1 >= narg)
       error->all(FLERR, "Pair {}: pair_coeff keyword {} needs a value", style, key);
     const double value = positive_arg(fmt::format("Pair {}", style), key.c_str(), arg[iarg + 1],

@@ -28,12 +28,9 @@ ViscousSettings ViscousSettings::parse(LAMMPS *lmp, int narg, char **arg)
   else error->all(FLERR, "Fix viscous/relative: unknown style '{}' (expected gamma or J)", arg[3]);
   s.value = positive_arg("Fix viscous/relative", arg[3], arg[4], lmp);
 
-  KeywordSet given(lmp, "Fix viscous/relative");
+  KeywordSet given(lmp, "Fix viscous/relative", Keywords::VISCOUS_RELATIVE);
   for (int iarg = 5; iarg < narg; iarg += 2) {
     const std::string key = arg[iarg];
-    if (key != "mode" && key != "weight" && key != "cutoff")
-      error->all(FLERR, "Fix viscous/relative: unknown keyword '{}' (expected mode, weight or "
-                 "cutoff)", key);
     given.add(key);
     if (iarg + 1 >= narg)
       error->all(FLERR, "Fix viscous/relative: keyword {} needs a value", key);

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Idempotent set-up for the cluster-dynamics plugin on Debian 12:
-#   1. Debian packages (compilers, Open MPI, GoogleTest, python3-pytest/numpy/matplotlib/sfepy)
+#   1. Debian packages (compilers, Open MPI, GoogleTest, python3-pytest/numpy/matplotlib/sfepy,
+#      python3-sphinx for the doc build)
 #   2. the LAMMPS 4Feb2025 source (Debian's source package, checksum pinned)
 #   3. LAMMPS built as a shared library + lmp, cached under ~/.cache (reused by later runs)
 #   4. the plugin (build/clusterdynplugin.so) and build/env.sh
@@ -26,7 +27,7 @@ lammps_sha256=3671165bd52fad36734e0a9136c5bc5ecb225e03988f8c89aa13366a8b53b1c7
 
 apt_packages=(build-essential cmake ninja-build pkg-config xz-utils dpkg-dev ca-certificates
   libopenmpi-dev openmpi-bin libgtest-dev libeigen3-dev
-  python3 python3-pytest python3-numpy python3-matplotlib python3-mpi4py python3-sfepy)
+  python3 python3-pytest python3-numpy python3-matplotlib python3-mpi4py python3-sfepy python3-sphinx)
 
 # LAMMPS configuration: changing it changes the cache key
 lammps_cmake_opts=(-DCMAKE_BUILD_TYPE=Release -DBUILD_SHARED_LIBS=on -DBUILD_MPI=on -DBUILD_OMP=on

@@ -194,6 +194,8 @@ def test_a_reset_clock_is_no_jump(step):
     ("dust 1.0 axis", "axis needs a value"),
     ("dust 1.0 minsize 0", "minsize must be >= 1"),
     ("dust 1.0 minsize 2.5", "minsize must be an integer"),
+    ("dust 1.0 minsize 8 minsize 9", "keyword minsize given twice"),
+    ("dust 1.0 face rear axis y face front", "keyword face given twice"),
     ("dust 1.0 minsize", "minsize needs a value"),
 ])
 def test_bad_arguments(args, message):

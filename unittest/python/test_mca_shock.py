@@ -364,6 +364,7 @@ def test_shock_and_linear_elements_linked_keep_their_energy():
     ("bulk_viscosity 3 1.2", r"b1 \(linear\) must lie in 0 to 2"),
     ("bulk_viscosity 0.06 5", r"b2 \(quadratic\) must lie in 0 to 4"),
     ("hourglass 6", r"hourglass \(coefficient\) must lie in 0 to 5"),
+    ("hourglass 0", r"hourglass must be > 0 with shock \(got 0\)"),
 ])
 def test_numerical_coefficients_beyond_their_range_are_refused(words, message):
     setup = [c for c in plate_setup("si", 3) if not c.startswith("pair_coeff")]

@@ -26,7 +26,7 @@ BAD_SETTINGS = [
     ("morse/spline", "cut 1.2 chain 0", "chain N must be between 1 and 1000 \\(got 0\\)"),
     ("morse/spline", "cut 1.2 chain 2147483647", "chain N must be between 1 and 1000"),
     ("morse/spline", "cut 1.2 chain", "keyword chain needs a value"),
-    ("morse/spline", "cut 1.2 junk 3", "unknown keyword 'junk' after tail cut \\(expected chain, link"),
+    ("morse/spline", "cut 1.2 junk 3", "after tail cut\\): unknown keyword 'junk' \\(expected start, chain, lin"),
     ("morse/spline", "wagner chain", "keyword chain needs a value"),
     ("morse/spline", "lagunov 1.0", "lagunov: Rc must be > 1"),
     ("morse/spline", "lagunov 0.9 start 0.5", "lagunov: Rc must be > 1"),
@@ -44,7 +44,7 @@ BAD_COEFFS = [  # pair_style, pair_coeff args, message
     ("mie/spline cut 1.2", "1.0 1.0 6 0", "m must be > 0"),
     ("morse/spline cut 1.2", "1.0 6.0 1.0 kappa 0", "kappa must be > 0"),
     ("morse/spline cut 1.2", "1.0 6.0 1.0 kappa", "keyword kappa needs a value"),
-    ("morse/spline cut 1.2", "1.0 6.0 1.0 gamma 2", "unknown pair_coeff keyword 'gamma'"),
+    ("morse/spline cut 1.2", "1.0 6.0 1.0 gamma 2", "pair_coeff: unknown keyword 'gamma'"),
     ("morse/spline cut 1.2", "1.0 6.0 1.0 rc 0.9", "rc must be > 1"),
     ("morse/spline lagunov 1.3", "1.0 6.0 1.0 rc 0.9", "rc must be > 1"),
     ("mie/spline cut 1.2", "1.0 1.0 1e6 6", "law of types 1 1 overflows at r = a/2 \\(the exponents n and m must be below"),
@@ -184,11 +184,11 @@ for rid, args, expect, defect in [
     ("cut--0", "cut -0", r"Rc must be > 1 .*\(got -0\)", None),
     ("cut-0", "cut 0", r"Rc must be > 1 .*\(got 0\)", None),
     ("cut-1", "cut 1", r"Rc must be > 1 .*\(got 1\)", None),
-    ("cut-2-numbers", "cut 1.3 1.5", r"unknown keyword '1.5' after tail cut", None),
+    ("cut-2-numbers", "cut 1.3 1.5", r"after tail cut\): unknown keyword '1.5'", None),
     ("cut-uppercase", "CUT 1.3", r"unknown tail 'CUT'", None),
     ("order-link-before-tail", "link 1.05 cut 1.3", r"unknown tail 'link'", None),
     ("wagner-number", "wagner 1.5", r"wagner: takes no arguments \(got 1.5\)", None),
-    ("wagner-word", "wagner abc", r"unknown keyword 'abc' after tail wagner", None),
+    ("wagner-word", "wagner abc", r"after tail wagner\): unknown keyword 'abc'", None),
     ("lagunov-nothing", "lagunov", r"lagunov: expected a number Rc \(got nothing\)", None),
     ("lagunov-nan", "lagunov nan", r"lagunov: expected a number Rc \(got 'nan'\)", None),
     ("lagunov-0.5", "lagunov 0.5", r"lagunov: Rc must be > 1", None),
@@ -252,7 +252,7 @@ for s in STYLES:
     row(f"coeff-{s}-missing-arg", SCENE_BOX, [f"pair_style {s} cut 1.3", f"pair_coeff 1 1 {short}"],
         rf"Pair {s}: expected pair_coeff I J {usage}")
     row(f"coeff-{s}-extra-arg", SCENE_BOX, [f"pair_style {s} cut 1.3", f"pair_coeff 1 1 {SCENE_LAW[s]} 7"],
-        rf"Pair {s}: unknown pair_coeff keyword '7'")
+        rf"Pair {s} pair_coeff: unknown keyword '7'")
 
 M = ["pair_style morse/spline cut 1.3"]
 L = ["pair_style lj/spline cut 1.3"]
@@ -278,7 +278,7 @@ for rid, pre, coeff, expect, defect in [
     ("mie-n-below-m", MIE, "pair_coeff 1 1 1.0 1.0 6 12", r"n must be > m \(got n = 6, m = 12\)", None),
     ("mie-m--0", MIE, "pair_coeff 1 1 1.0 1.0 12 -0", r"m must be > 0 \(got -0\)", None),
     ("mie-m-inf", MIE, "pair_coeff 1 1 1.0 1.0 12 inf", r"\bm\b.*inf", None),
-    ("lj-mie-args", L, "pair_coeff 1 1 1.0 1.0 12 6", r"unknown pair_coeff keyword '12'", None),
+    ("lj-mie-args", L, "pair_coeff 1 1 1.0 1.0 12 6", r"pair_coeff: unknown keyword '12'", None),
     ("kappa-first", M, "pair_coeff 1 1 kappa 2 1.0 6.0 1.0", r"\bD\b.*kappa", None),
     ("kappa-abc", M, "pair_coeff 1 1 1.0 6.0 1.0 kappa abc", r"kappa.*abc", None),
     ("kappa-nan", L, "pair_coeff 1 1 1.0 1.0 kappa nan", r"kappa.*nan", None),
@@ -291,7 +291,7 @@ for rid, pre, coeff, expect, defect in [
      r"keyword kappa given twice", None),
     ("rc-twice", M, "pair_coeff 1 1 1.0 6.0 1.0 rc 1.2 rc 1.25", r"keyword rc given twice",
      None),
-    ("KAPPA", M, "pair_coeff 1 1 1.0 6.0 1.0 KAPPA 2", r"unknown pair_coeff keyword 'KAPPA'",
+    ("KAPPA", M, "pair_coeff 1 1 1.0 6.0 1.0 KAPPA 2", r"pair_coeff: unknown keyword 'KAPPA'",
      None),
     ("kappa-1e300", L, "pair_coeff 1 1 1.0 1.0 kappa 1e300", r"kappa 1e\+300 overflows", None),
     ("rc-1", M, "pair_coeff 1 1 1.0 6.0 1.0 rc 1", r"rc must be > 1", None),

@@ -415,7 +415,7 @@ row("adapt-pair_state", SCENE_LINKED, ["variable k equal 1",
 
 # in an empty box: keywords given twice; the link state's fix IDs are reserved
 row("style-link-twice-empty-box", SCENE_EMPTY, P + "cut 1.2 link 1.05 link 1.1",
-    "Pair style morse/spline: keyword link given twice")
+    r"Pair style morse/spline \(after tail cut\): keyword link given twice")
 row("style-relink-twice-empty-box", SCENE_EMPTY, P + "cut 1.2 link 1.05 relink yes relink no",
     "keyword relink given twice")
 row("link-fix-id-taken-before-pair-style", SCENE_EMPTY,

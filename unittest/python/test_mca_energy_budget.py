@@ -1,0 +1,46 @@
+"""The energy budget of doc/pair_mca.rst "Energy budget", closed in a yielding impact for both
+laws: the work done on the sample (none in a free impact) = kinetic (with rotation) + pe + the
+pair's columns 3, 4 and 6, and column 5 (plastic work) only for the linear law: the shock law
+puts the plastic work into pe as the elements' heat.  The scene is test_mca_shock.py's impact
+of aluminium at 500 m/s with its yield stress, at a quarter of the default step (the radial
+return drifts by O(dt))."""
+import numpy as np
+import pytest
+
+from conftest import run_lmp, thermo_rows
+from test_mca_shock import K, RHO0, C0, UNITS, impact_script
+
+BUDGET = """compute pw all pair mca
+variable closed equal ke+c_erot+pe+c_pw[3]+c_pw[4]+c_pw[6]
+thermo_style custom step ke pe c_erot c_pw[5] v_closed
+thermo_modify format float %.15g
+thermo 400
+run 4800
+"""
+
+
+def budget(tmp_path, units, law):
+    script = impact_script(units, dt_share=0.25)
+    if law == "linear":
+        _, V, R, P, _ = UNITS[units]
+        script = script.replace(f"shock {RHO0 * R} {C0 * V} 1.34 2.0", f"bulk {K * P}")
+    return thermo_rows(run_lmp(tmp_path, script + BUDGET))
+
+
+@pytest.mark.parametrize("units", ["si", "metal"])
+def test_the_shock_law_budget_leaves_the_plastic_work_out(tmp_path, units):
+    rows = budget(tmp_path, units, "shock")
+    e0 = rows[0, 5]
+    plastic = rows[-1, 4]
+    assert plastic > 0.05 * e0                              # it yields, a lot
+    assert np.abs(rows[:, 5] - e0).max() < 0.01 * e0        # closed without column 5
+    assert abs(rows[-1, 5] + plastic - e0) > 0.04 * e0      # and open with it
+
+
+def test_the_linear_law_budget_takes_the_plastic_work(tmp_path):
+    rows = budget(tmp_path, "si", "linear")
+    e0 = rows[0, 5]
+    plastic = rows[:, 4]
+    assert plastic[-1] > 0.05 * e0
+    assert np.abs(rows[:, 5] + plastic - e0).max() < 0.01 * e0
+    assert np.abs(rows[:, 5] - e0).max() > 0.04 * e0
