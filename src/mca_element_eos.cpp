@@ -126,62 +126,93 @@ void McaElementEos::begin(int nall)
     for (int k = 0; k < SUMS; k++) sums[i][k] = 0.0;
 }
 
-void McaElementEos::finish(bool advance, double dt)
+void McaElementEos::finish(Advance how, double dt)
 {
   exchange.to_owners(sums, SUMS);
   for (int i = 0; i < atom->nlocal; i++)
-    if (!advance_element(i, advance ? dt : 0.0))
+    if (!advance_element(i, how, dt))
       for (int k = 0; k < FORWARD; k++) pressures[i][k] = 0.0;
   exchange.to_ghosts(pressures, FORWARD);
 }
 
-// element i over a step of dt (0: no step, the pressure of its state): its volume ratio and
-// energy, its pressure tensor P = (p + q) Omega J K^-1 and displacement gradient; false: it has
-// no shock law or no volume
-bool McaElementEos::advance_element(int i, double dt)
+namespace {
+// the shape sums at the last evaluation's separations: K' = K - M - M^T + N, M' = M - N
+void last_shape(const double *s, double *last)
+{
+  const double *n = s + McaElementEos::MOVES, *mm = s + 6;
+  const double v[15] = {s[0] - 2.0 * mm[0] + n[0], s[1] - 2.0 * mm[4] + n[1],
+                        s[2] - 2.0 * mm[8] + n[2], s[3] - mm[1] - mm[3] + n[3],
+                        s[4] - mm[2] - mm[6] + n[4], s[5] - mm[5] - mm[7] + n[5],
+                        mm[0] - n[0], mm[1] - n[3], mm[2] - n[4],
+                        mm[3] - n[3], mm[4] - n[1], mm[5] - n[5],
+                        mm[6] - n[4], mm[7] - n[5], mm[8] - n[2]};
+  for (int k = 0; k < 15; k++) last[k] = v[k];
+}
+
+double trace(const double g[3][3])
+{
+  return g[0][0] + g[1][1] + g[2][2];
+}
+
+// det(I + g)
+double stretch(const double g[3][3])
+{
+  const double a[3][3] = {{1.0 + g[0][0], g[0][1], g[0][2]},
+                          {g[1][0], 1.0 + g[1][1], g[1][2]},
+                          {g[2][0], g[2][1], 1.0 + g[2][2]}};
+  return a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) -
+      a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
+      a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
+}
+}    // namespace
+
+// element i over a step of dt, or a move between runs, or neither (finish()): its volume ratio
+// and energy, its pressure tensor P = (p + q) Omega J K^-1 and displacement gradient; false: it
+// has no shock law or no volume.  A step advances J by exp((tr H' + tr H) / 2) (H' the
+// gradient at the last step's separations, H at this step's); a move between runs, of any size,
+// by det(I + H'), exact for a homogeneous one, and is checked against the pole even where the
+// moved element's links no longer span a volume.
+bool McaElementEos::advance_element(int i, Advance how, double dt)
 {
   const int type = atom->type[i];
   if (laws[type].bulk == 0.0) return false;
+  const McaShockEos &law = laws[type];
   const double *s = sums[i];
-  double inv[6];
-  if (!McaElementShape::invert(s, inv)) {
-    atom->dvector[visc][i] = 0.0;
+  double &dvol = atom->dvector[dvolume][i], &u = atom->dvector[energy][i];
+  double &q = atom->dvector[visc][i];
+  double inv[6], grad[3][3], last[15], inv0[6], grad0[3][3];
+  const bool shaped = McaElementShape::invert(s, inv);
+  if (shaped) McaElementShape::gradient(s, inv, grad);
+  bool had_shape = false;
+  if (how != NONE) {
+    last_shape(s, last);
+    had_shape = McaElementShape::invert(last, inv0);
+    if (had_shape) McaElementShape::gradient(last, inv0, grad0);
+    if (how == MOVED && had_shape && !((1.0 + dvol) * stretch(grad0) > law.limit()))
+      beyond_limit(i, (1.0 + dvol) * stretch(grad0));
+  }
+  if (!shaped) {
+    q = 0.0;
     return false;
   }
-  double grad[3][3];
-  McaElementShape::gradient(s, inv, grad);
-  const double trace = grad[0][0] + grad[1][1] + grad[2][2];
   double *out = pressures[i];
   const double sym[6] = {grad[0][0], grad[1][1], grad[2][2], 0.5 * (grad[0][1] + grad[1][0]),
                          0.5 * (grad[0][2] + grad[2][0]), 0.5 * (grad[1][2] + grad[2][1])};
   for (int k = 0; k < 6; k++) out[GRADIENT + k] = sym[k];
   out[HAS_VOLUME] = 1.0;
-  const McaShockEos &law = laws[type];
-  double &dvol = atom->dvector[dvolume][i], &u = atom->dvector[energy][i];
-  double &q = atom->dvector[visc][i];
   double j1 = 1.0 + dvol;
-  if (dt > 0.0) {
-    // the gradient at the last step's separations (as this one's where they spanned no
-    // volume): K' = K - M - M^T + N, M' = M - N
-    const double *n = s + MOVES, *mm = s + 6;
-    const double last[15] = {s[0] - 2.0 * mm[0] + n[0], s[1] - 2.0 * mm[4] + n[1],
-                             s[2] - 2.0 * mm[8] + n[2], s[3] - mm[1] - mm[3] + n[3],
-                             s[4] - mm[2] - mm[6] + n[4], s[5] - mm[5] - mm[7] + n[5],
-                             mm[0] - n[0], mm[1] - n[3], mm[2] - n[4],
-                             mm[3] - n[3], mm[4] - n[1], mm[5] - n[5],
-                             mm[6] - n[4], mm[7] - n[5], mm[8] - n[2]};
-    double before = trace, inv0[6], grad0[3][3];
-    if (McaElementShape::invert(last, inv0)) {
-      McaElementShape::gradient(last, inv0, grad0);
-      before = grad0[0][0] + grad0[1][1] + grad0[2][2];
-    }
+  if (how != NONE) {
+    // the last step's gradient (as this one's where its separations spanned no volume)
+    const double now = trace(grad), before = had_shape ? trace(grad0) : now;
     const McaMaterial &m = (*scaled)[type];
-    const double j0 = j1, strain = 0.5 * (before + trace);
-    j1 = j0 * exp(strain);
+    const double j0 = j1;
+    j1 = how == MOVED && had_shape ? j0 * stretch(grad0) : j0 * exp(0.5 * (before + now));
     if (!(j1 > law.limit())) beyond_limit(i, j1);
     const double w0 = 0.5 * (law.pressure(j0, u) + q) * j0 * before;
-    q = force->mvv2e * law.viscosity(-strain / dt, m.rho0 / j1, m.c0, 2.0 * atom->radius[i]);
-    u = law.energy_after(u, w0, j1, q, 0.5 * j1 * trace);
+    if (how == STEP)
+      q = force->mvv2e * law.viscosity(-0.5 * (before + now) / dt, m.rho0 / j1, m.c0,
+                                        2.0 * atom->radius[i]);
+    u = law.energy_after(u, w0, j1, q, 0.5 * j1 * now);
     dvol = j1 - 1.0;
   }
   const double pressure = law.pressure(j1, u) + q, scale = pressure * volume(i) * j1;
@@ -195,7 +226,8 @@ void McaElementEos::beyond_limit(int i, double ratio) const
   const McaShockEos &law = laws[atom->type[i]];
   error->one(FLERR, "Pair mca: element {} compressed to V/V0 = {:.4g}, beyond the limit 1 - 1/s "
              "= {:.4g} of its shock equation of state (a shock too strong for this s, or a time "
-             "step too long)", atom->tag[i], ratio, law.limit());
+             "step too long, or a box change or displacement between runs)", atom->tag[i], ratio,
+             law.limit());
   std::abort();    // not reached: error->one() throws
 }
 

@@ -63,8 +63,12 @@ namespace ClusterDyn {
     double memory_usage() const;
 
     // the sums over linked pairs: zero, add each pair (d = x_j - x_i now, before: at the last
-    // step), then finish: advance (a dynamics step of dt) J, u and q, and send the pressures
-    // to ghosts
+    // evaluation), then finish: advance J, u and q, and send the pressures to ghosts.  STEP: a
+    // dynamics step of dt (q from its rate); MOVED: the setup of a run, where positions may
+    // have changed since the last evaluation (change_box, displace_atoms, set): that change
+    // compresses the elements as a step would, at the viscosity they had (no rate); NONE: the
+    // pressure of the state
+    enum Advance { NONE, STEP, MOVED };
     void begin(int nall);
     void add_pair(int i, int j, const double *d, const double *before, double w, bool jown)
     {
@@ -80,7 +84,10 @@ namespace ClusterDyn {
         if (jown) sums[j][k] += w * s[k];
       }
     }
-    void finish(bool advance, double dt);
+    void finish(Advance how, double dt);
+
+    // whether element i (owned or ghost) has a shock law and links that span a volume
+    bool has_volume(int i) const { return pressures[i][HAS_VOLUME] > 0.0; }
 
     // the mean stress of the pair's elements that have a volume (0: neither has)
     double pair_stress(int i, int j) const
@@ -141,7 +148,7 @@ namespace ClusterDyn {
     int dvolume, energy, visc;        // the store's columns: J - 1, u, q
 
     double volume(int i) const;
-    bool advance_element(int i, double dt);
+    bool advance_element(int i, Advance how, double dt);
     void check_densities() const;
     [[noreturn]] void beyond_limit(int i, double ratio) const;
   };

@@ -18,6 +18,7 @@ McaManybody::~McaManybody()
 {
   memory->destroy(theta);
   memory->destroy(dtheta);
+  memory->destroy(extra);
 }
 
 void McaManybody::grow(int nmax_atoms)
@@ -26,13 +27,15 @@ void McaManybody::grow(int nmax_atoms)
   nmax = nmax_atoms;
   memory->destroy(theta);
   memory->destroy(dtheta);
+  memory->destroy(extra);
+  memory->create(extra, nmax, "pair:theta_modulus");
   memory->create(theta, nmax, 1, "pair:theta");
   memory->create(dtheta, nmax, NCHANGES, "pair:dtheta");
 }
 
 double McaManybody::memory_usage() const
 {
-  return (double) nmax * (1 + NCHANGES) * sizeof(double);
+  return (double) nmax * (2 + NCHANGES) * sizeof(double);
 }
 
 double McaManybody::volume(int i) const
@@ -42,7 +45,7 @@ double McaManybody::volume(int i) const
 
 void McaManybody::begin_strain(int nall)
 {
-  for (int i = 0; i < nall; i++) theta[i][0] = 0.0;
+  for (int i = 0; i < nall; i++) theta[i][0] = extra[i] = 0.0;
 }
 
 void McaManybody::finish_strain()
@@ -65,7 +68,7 @@ void McaManybody::tally_changes(StateTally &changes, int damage_work, int plasti
   const int *type = atom->type;
   for (int i = 0; i < atom->nlocal; i++) {
     const double omega = volume(i);
-    const double half = 0.5 * (*scaled)[type[i]].lambda * omega;
+    const double half = 0.5 * ((*scaled)[type[i]].lambda + extra[i]) * omega;
     double now = theta[i][0], e_now = half * now * now;
     double released[NCHANGES];
     for (int c = 0; c < NCHANGES; c++) {
@@ -84,7 +87,8 @@ void McaManybody::tally_changes(StateTally &changes, int damage_work, int plasti
 void McaManybody::tally_energy(double *total, double *per_atom) const
 {
   for (int i = 0; i < atom->nlocal; i++) {
-    const double e = 0.5 * (*scaled)[atom->type[i]].lambda * volume(i) * theta[i][0] * theta[i][0];
+    const double e =
+        0.5 * ((*scaled)[atom->type[i]].lambda + extra[i]) * volume(i) * theta[i][0] * theta[i][0];
     if (total) *total += e;
     if (per_atom) per_atom[i] += e;
   }

@@ -35,7 +35,7 @@ namespace ClusterDyn {
     enum { CHANGE_STATE = 0, CHANGE_DAMAGE = 1, CHANGE_PLASTIC = 2, NCHANGES = 3 };
 
     McaManybody(LAMMPS *lmp, McaExchange &exchange) :
-        Pointers(lmp), exchange(exchange), theta(nullptr), dtheta(nullptr), nmax(0),
+        Pointers(lmp), exchange(exchange), theta(nullptr), dtheta(nullptr), extra(nullptr), nmax(0),
         fraction(1.0), scaled(nullptr)
     {
     }
@@ -57,13 +57,17 @@ namespace ClusterDyn {
       if (jown) theta[j][0] += elong * ai / (ai + aj);
     }
     void finish_strain();
+    // a modulus added to element i's lambda from here to the next begin_strain() (owners and
+    // ghosts alike): the bulk modulus of a shock-law element whose links span no volume
+    void add_modulus(int i, double k) { extra[i] = k; }
 
     // the normal stress the many-body term adds to linked pair ij (a_i, a_j: half stiffnesses)
     double pair_stress(int i, int j, double ai, double aj) const
     {
       const std::vector<McaMaterial> &m = *scaled;
       const int *type = atom->type;
-      return (aj * m[type[i]].lambda * theta[i][0] + ai * m[type[j]].lambda * theta[j][0]) /
+      return (aj * (m[type[i]].lambda + extra[i]) * theta[i][0] +
+              ai * (m[type[j]].lambda + extra[j]) * theta[j][0]) /
           (ai + aj);
     }
 
@@ -86,6 +90,7 @@ namespace ClusterDyn {
    private:
     McaExchange &exchange;
     double **theta, **dtheta;
+    double *extra;    // add_modulus()
     int nmax;
     double fraction;
     const std::vector<McaMaterial> *scaled;

@@ -56,7 +56,8 @@ void McaSegmentContact::coeff(int narg, char **arg)
   Given g;
   g.mu0 = number_arg(who, "mu0 (dry friction coefficient)", arg[3], lmp);
   if (g.mu0 < 0.0 || g.mu0 > 1.0e6)
-    error->all(FLERR, "{}: mu0 (dry friction coefficient) must be >= 0 (got {})", who, arg[3]);
+    error->all(FLERR, "{}: mu0 (dry friction coefficient) must lie in 0 to 1e6 (got {})", who,
+               arg[3]);
   KeywordSet seen(lmp, who, Keywords::MCA_SEGMENTS);
   for (int i = 4; i < narg;) {
     const std::string key = arg[i];
@@ -93,8 +94,8 @@ void McaSegmentContact::coeff(int narg, char **arg)
                    arg[i + 1], arg[i + 4]);
       const double seed = integer_arg(who, "roughness seed", arg[i + 7], lmp);
       if (seed < 1 || seed > 2147483646)
-        error->all(FLERR, "{}: roughness seed must be a positive integer (got {})", who,
-                   arg[i + 7]);
+        error->all(FLERR, "{}: roughness seed must be an integer from 1 to 2147483646 (got {})",
+                   who, arg[i + 7]);
       g.seed = static_cast<int>(seed);
     }
     i += 1 + count;

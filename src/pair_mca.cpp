@@ -12,6 +12,7 @@
 
 #include "pair_mca.h"
 
+#include "arg_values.h"
 #include "mca_linked_pair.h"
 #include "mca_pair_walk.h"
 #include "mca_unlinked_pair.h"
@@ -145,7 +146,17 @@ void PairMCA::volumetric_strain(const StatePass &pass)
     }
   });
   manybody.finish_strain();
-  if (pressure) eos.finish(moving, update->dt);
+  if (!pressure) return;
+  eos.finish(moving ? McaElementEos::STEP
+                    : (update->setupflag && update->whichflag == 1 ? McaElementEos::MOVED
+                                                                    : McaElementEos::NONE),
+             update->dt);
+  // a shock-law element whose links span no volume (a pair, a chain, a sheet) has no pressure:
+  // its pairs take the linear law's volumetric response, lambda = K - 2G/3, instead
+  const int *type = atom->type;
+  for (int i = 0; i < nlocal + atom->nghost; i++)
+    if (eos.has_law(type[i]) && !eos.has_volume(i))
+      manybody.add_modulus(i, types.scaled()[type[i]].bulk);
 }
 
 /* ----------------------------------------------------------------------
@@ -232,9 +243,11 @@ void PairMCA::pair_forces(const StatePass &pass, StateTally &changes)
     if (linked) {
       McaLinkedPair link(model.response, v, a, domain->dimension == 2);
       const double sigma = plastic ? v[C::SIG] : trial_stresses(i, j, v, p, turning);
-      // with a shock law on either side the pair takes its elements' pressure; on both, it
-      // returns its deviator about zero and has the hourglass spring
-      const bool si = eos.has_law(atom->type[i]), sj = eos.has_law(atom->type[j]);
+      // with a shock law (and a volume) on either side the pair takes its elements' pressure;
+      // on both, it returns its deviator about zero and has the hourglass spring; an element
+      // of the shock law without a volume acts as one of the linear law (volumetric_strain)
+      const bool si = eos.has_law(atom->type[i]) && eos.has_volume(i);
+      const bool sj = eos.has_law(atom->type[j]) && eos.has_volume(j);
       const double phi = plastic ? plasticity.phi(i, j) : 1.0;
       const double mean = phi < 1.0 && !(si && sj) ? plasticity.mean(i, j) : 0.0;
       McaPressureLoad load;
@@ -347,8 +360,23 @@ void PairMCA::allocate()
 void PairMCA::coeff(int narg, char **arg)
 {
   if (!allocated) allocate();
-  if (narg >= 3 && strcmp(arg[2], "segments") == 0) segments.coeff(narg, arg);
-  else types.coeff(narg, arg);
+  if (narg >= 3 && strcmp(arg[2], "segments") == 0) {
+    segments.coeff(narg, arg);
+    return;
+  }
+  // a pair of types that meets by contact segments never links: link yes|no would be ignored
+  if (narg >= 4 && strcmp(arg[narg - 2], "link") == 0) {
+    int ilo, ihi, jlo, jhi;
+    type_range("Pair mca pair_coeff", "I", arg[0], atom->ntypes, ilo, ihi, lmp);
+    type_range("Pair mca pair_coeff", "J", arg[1], atom->ntypes, jlo, jhi, lmp);
+    for (int i = ilo; i <= ihi; i++)
+      for (int j = jlo; j <= jhi; j++)
+        if (i != j && segments.between(i, j))
+          error->all(FLERR, "Pair mca pair_coeff: types {} and {} meet by contact segments "
+                     "(pair_coeff {} {} segments): they never link, link {} does not apply", i,
+                     j, MIN(i, j), MAX(i, j), arg[narg - 1]);
+  }
+  types.coeff(narg, arg);
 }
 
 void PairMCA::init_style()

@@ -38,6 +38,7 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import cd_crystal  # noqa: E402
 import cd_uniaxial  # noqa: E402
+from cli_numbers import numbers_take_values  # noqa: E402
 
 # Krivtsov's calibration: dimension and lambda = v_l / v0 of his close-packed lattices
 LATTICES = {"chain": (1, 1.0), "tri": (2, 1.06), "fcc": (3, 1.10)}
@@ -416,8 +417,9 @@ bcc); doc/compute_pair_params.rst, doc/plate_impact.rst."""
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__, epilog=HELP_LATTICE,
-                                 formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap = numbers_take_values(argparse.ArgumentParser(
+        description=__doc__, epilog=HELP_LATTICE,
+        formatter_class=argparse.RawDescriptionHelpFormatter))
     ap.add_argument("--density", type=float, required=True,
                     help="mass per volume, kg/m^3 (per area kg/m^2 for tri, per length kg/m for chain)")
     ap.add_argument("--sound-speed", type=float,

@@ -80,6 +80,10 @@ its own mean), so the mean never reads past the record and a straight line stays
 W = 0: no smoothing.  W above half the pulse duration is refused (it averages the pull-back
 away).
 
+A record with records missing between the shock's arrival and the minimum (a spacing wider
+than the smoothing window and than two median spacings) is refused, naming the two records
+around the gap: the smoothed velocity would interpolate across it and read a shallower minimum.
+
 --jump-column K: the column of compute free/surface's jump count (its 4th output: column 5
 after fix ave/time's v_now c_face[*]), the cumulative count of evaluations at which the face
 lay more than its depth away from where the previous evaluation's face and velocity put it
@@ -104,10 +108,14 @@ They raise ValueError with the reason where a record or an argument is refused.
 """
 import argparse
 import math
+import os
 import sys
 from dataclasses import dataclass, field
 
 import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from cli_numbers import numbers_take_values  # noqa: E402
 
 SHOWN = 5           # records named in a message, then how many in all
 
@@ -244,6 +252,20 @@ def _reading(t, v, pulse, window, rebound, lines, jumps):
                 f"a while, or one re-attached): give compute free/surface's minsize keyword "
                 f"(the atoms of one lattice plane of the target's section) or check compute "
                 f"dust's maxsize")
+    first, last = t[arrived] - 0.5 * window, t[end] + 0.5 * window
+    # a gap: records missing over more than the smoothing window (and two median spacings), so
+    # that the smoothed velocity there interpolates across the missing part
+    spacing = float(np.median(np.diff(t)))
+    widest = max(window, 2.0 * spacing)
+    holes = [k for k in range(1, len(t))
+             if t[k] - t[k - 1] > widest and t[k] > first and t[k - 1] < last]
+    if holes:
+        k = holes[0]
+        raise ValueError(
+            f"the record has a gap of {(t[k] - t[k - 1]) / spacing - 1:.0f} missing records "
+            f"between {_named(k - 1, t, lines)} and {_named(k, t, lines)} (the median spacing is "
+            f"{spacing:.6g}), within the reading's window from the shock's arrival to the "
+            f"minimum: the pull-back cannot be read across it; record the face without gaps")
     if vs[peak] - vs[low] < MIN_PULL_BACK * abs(vs[peak]):
         raise ValueError(f"no pull-back in the record: the velocity falls by "
                          f"{vs[peak] - vs[low]:.4g} after its peak {vs[peak]:.6g} at "
@@ -449,9 +471,9 @@ def _fmt(x):
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
-                                 formatter_class=argparse.RawDescriptionHelpFormatter,
-                                 epilog=__doc__.split("\n\n", 1)[1])
+    ap = numbers_take_values(argparse.ArgumentParser(
+        description=__doc__.split("\n\n")[0], formatter_class=argparse.RawDescriptionHelpFormatter,
+        epilog=__doc__.split("\n\n", 1)[1]))
     ap.add_argument("file")
     ap.add_argument("--rho0", type=_number(0.0), required=True,
                     help="density of the unloaded target (see below)")

@@ -73,6 +73,18 @@ def run_lmp(tmp_path, script, nprocs=1, name="in.test", env=None, args=()):
     return out.stdout
 
 
+def lmp_error(tmp_path, lines, name="in.error"):
+    """The whole error message of an input that must stop (the lmp executable: the library's
+    message is cut at 100 characters); the plugin loaded by path."""
+    infile = tmp_path / name
+    infile.write_text("\n".join([f"plugin load {PLUGIN}"] + list(lines)) + "\n")
+    env = {k: v for k, v in os.environ.items() if k != "LAMMPS_PLUGIN_PATH"}
+    out = subprocess.run([LMP, "-in", str(infile), "-log", "none", "-nocite"], cwd=tmp_path,
+                         env=env, capture_output=True, text=True, timeout=120)
+    assert out.returncode != 0, f"{name} did not stop:\n{out.stdout[-2000:]}"
+    return out.stdout + out.stderr
+
+
 def worst_energy_error(lmp, dt, chunks, span, variable="etot"):
     """After a run 0: the largest |E - E0| of the equal-style variable over `chunks` runs of
     span/dt steps each (velocity Verlet's energy error, for its dt^2 scaling)."""

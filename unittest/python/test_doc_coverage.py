@@ -3,13 +3,11 @@ which the parsers check their input against and list in their errors) is on its 
 in Syntax (as *keyword*), a dimensioned one in the page's Units section for every unit style,
 an optional one in Default; every command page has LAMMPS's sections in order; every reference
 to a section by name ("see X", "X" below, page.rst "X") names one that exists."""
-import os
 import re
-import subprocess
 
 import pytest
 
-from conftest import LMP, PLUGIN, SCENE_MORSE, scene_box, scene_mca
+from conftest import SCENE_MORSE, lmp_error, scene_box, scene_mca
 from doc_pages import (COMMAND_SECTIONS, DOC, TOP, UNIT_STYLES, Page, keyword_tables,
                        section_references)
 
@@ -46,13 +44,9 @@ def test_the_tables_are_read():
 
 @pytest.mark.parametrize("name", sorted(BOGUS))
 def test_the_parser_takes_its_table(tmp_path, name):
-    # the lmp executable: the library's error message is cut at 100 characters
-    (tmp_path / "in.bogus").write_text("\n".join([f"plugin load {PLUGIN}"] + BOGUS[name]) + "\n")
-    out = subprocess.run([LMP, "-in", "in.bogus", "-log", "none", "-nocite"], cwd=tmp_path,
-                         capture_output=True, text=True, timeout=60,
-                         env={k: v for k, v in os.environ.items() if k != "LAMMPS_PLUGIN_PATH"})
-    m = re.search(r"unknown keyword 'zzbogus' \(expected ([^)]*)\)", out.stdout + out.stderr)
-    assert out.returncode != 0 and m, out.stdout[-2000:]
+    out = lmp_error(tmp_path, BOGUS[name])
+    m = re.search(r"unknown keyword 'zzbogus' \(expected ([^)]*)\)", out)
+    assert m, out[-2000:]
     listed = re.split(r", | or ", m.group(1))
     assert listed == [e[0] for e in TABLES[name][1]]
 

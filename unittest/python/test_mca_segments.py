@@ -293,14 +293,18 @@ def test_two_ranks_give_the_serial_slide():
 
 BAD = [
     ("pair_coeff 1 1 segments 0.3", "the surface (I) and the elements on it (J) are two types"),
-    ("pair_coeff 1 2 segments -1", "mu0 (dry friction coefficient) must be >= 0"),
+    ("pair_coeff 1 2 segments -1", "mu0 (dry friction coefficient) must lie in 0 to 1e6 (got -1)"),
+    ("pair_coeff 1 2 segments 1e7", "mu0 (dry friction coefficient) must lie in 0 to 1e6 (got 1e7)"),
     ("pair_coeff 1 2 segments 0.3 limit 0", "limit (sigma0"),
     ("pair_coeff 1 2 segments 0.3 rough 1", "unknown keyword 'rough'"),
     ("pair_coeff 1 2 segments 0.3 roughness 0.5 0.1 1 0.2 0.1 1 3",
      "roughness amplitudes A1 + A2 must stay below 2/3"),
     ("pair_coeff 1 2 segments 0.3 roughness 0.1 0.4 0.7 0.1 0.1 1 3",
      "roughness regularity 1 (0.7) must be at least its period"),
-    ("pair_coeff 1 2 segments 0.3 roughness 0.1 0.4 1 0.1 0.1 1 0", "roughness seed"),
+    ("pair_coeff 1 2 segments 0.3 roughness 0.1 0.4 1 0.1 0.1 1 0",
+     "roughness seed must be an integer from 1 to 2147483646 (got 0)"),
+    ("pair_coeff 1 2 segments 0.3 roughness 0.1 0.4 1 0.1 0.1 1 2147483647",
+     "roughness seed must be an integer from 1 to 2147483646"),
     ("pair_coeff 1 2 segments 0.3 roughness 0.1 0.4 1", "roughness needs 7 values"),
 ]
 
@@ -313,6 +317,17 @@ def test_bad_segment_coefficients(coeff, message):
         with pytest.raises(Exception, match=message.replace("(", r"\(").replace(")", r"\)")
                            .replace("+", r"\+")):
             lmp.command(coeff)
+
+
+def test_a_link_line_for_a_pair_of_types_that_meets_by_segments_is_refused():
+    with session() as lmp:
+        head, _ = substrate("lj")
+        lmp.commands_list(head + ["pair_style mca fraction 0.9 plane strain",
+                                  "pair_coeff 1 2 segments 0.3"])
+        for line in ("pair_coeff 1 2 link yes", "pair_coeff 2 1 link no", "pair_coeff * * link yes"):
+            with pytest.raises(Exception, match=r"types 1 and 2 meet by contact segments"):
+                lmp.command(line)
+        lmp.command("pair_coeff 1 1 link no")     # a type with itself is not a segment pair
 
 
 @pytest.mark.parametrize("change,message", [

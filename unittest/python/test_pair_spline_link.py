@@ -6,13 +6,14 @@ links made, serial against MPI runs, the nearest-neighbour chain (chain 1).  The
 hostile input (conftest.InputTable) of link L: its keywords, the link state under the commands
 around it (unfix, replaced pair styles, hybrid, comm_style tiled, fix evaporate, fix adapt)."""
 import math
+import re
 import os
 import sys
 
 import numpy as np
 import pytest
 from conftest import (OK, PLUGIN, SCENE_BOX, SCENE_EMPTY, SCENE_LINKED, SCENE_MORSE, InputTable,
-                      check_input, run_lmp, scene_dimer, scene_pair, session)
+                      check_input, lmp_error, run_lmp, scene_dimer, scene_pair, session)
 
 D, ALPHA, A = 1.0, 6.0, 1.0    # Morse in lj units
 # the same law (alpha a = 6) in other unit styles: energy D and length a of each
@@ -432,3 +433,19 @@ row("link-fix-id-prefix-taken", SCENE_EMPTY,
 @pytest.mark.parametrize("setup,cmds,expect,isolate", INPUTS.rows)
 def test_hostile_input(setup, cmds, expect, isolate):
     check_input(setup, cmds, expect, isolate)
+
+
+@pytest.mark.parametrize("units,scale", [("lj", 1.0), ("si", 1.0e-5)])
+def test_links_moved_away_between_runs_are_named_as_a_move(tmp_path, units, scale):
+    """One atom of a linked block displaced by 3 a between two runs: the error says the atoms
+    were moved since the last run, not that the skin is too small."""
+    a = scale
+    lines = [f"units {units}", "atom_modify map array", f"lattice fcc {1.41421356 * a}",
+             "region box block 0 3 0 3 0 3", "create_box 1 box", "create_atoms 1 box",
+             "mass 1 1.0", "pair_style morse/spline cut 1.3 link 1.1",
+             f"pair_coeff * * 1.0 6.0 {a}", f"neighbor {0.3 * a} bin", "fix 1 all nve",
+             f"timestep {0.002 * (1.0 if units == 'lj' else 1e-8)}", "run 10",
+             "group one id 1", f"displace_atoms one move {3.0 * a} 0 0 units box", "run 10"]
+    out = lmp_error(tmp_path, lines)
+    assert re.search(r"links left the neighbour list unbroken \(fix \S+\) before this run: atoms "
+                     r"were moved since the last run", out), out[-1500:]

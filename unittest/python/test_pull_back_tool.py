@@ -52,6 +52,9 @@ MIDDROP = shape([0, 10, 12, 80, 99], [0, 0, 100, 100, 76.6])   # ends while fall
 PB30 = shape([0, 10, 12, 50, 55, 70, 75, 100], [0, 0, 100, 100, 70, 70, 100, 100])
 
 
+GAPPED = np.delete(T, range(40, 60))                           # 20 records lost at the minimum
+
+
 def text(t=T, v=None, jumps=None, edit=None):
     """A fix ave/time-like file: HEADER, then step, time, velocity (and jump count) per line;
     edit = {record: replacement line}."""
@@ -116,6 +119,8 @@ HOSTILE = [
      "argument --c-long"),
     ("c-long <0", text(), ["--rho0", "2700", "--c-long", "-1", "--pulse", "4e-8"],
      "argument --c-long"),
+    ("pulse <0 e-notation", text(), ["--rho0", "2700", "--c-long", "6386", "--pulse", "-4e-8"],
+     "argument --pulse: must be a finite number > 0 (got -4e-8)"),
     ("c-bulk nan", text(), ARGS + ["--c-bulk", "nan", "--pulse", "4e-8"], "argument --c-bulk"),
     ("c-bulk 0", text(), ARGS + ["--c-bulk", "0", "--pulse", "4e-8"], "argument --c-bulk"),
     ("c0, the old option", text(), ["--rho0", "2700", "--c0", "6386", "--pulse", "4e-8"],
@@ -222,6 +227,8 @@ HOSTILE = [
     ("rebound", text(v=RINGING), ARGS + ["--pulse", "5e-8", "--rebound", "0.1"], 300.0),
     ("no rebound", text(v=RINGING), ARGS + ["--pulse", "5e-8"], 700.0),
     ("jumps outside the window", text(jumps=J), PLATE + ["--jump-column", "3"], 139.0),
+    ("records missing at the minimum", text(t=GAPPED, v=trapezoid(GAPPED)), PLATE,
+     "the record has a gap of 20 missing records between line 42 (t = 3.9e-08) and line 43"),
     ("jumps before the arrival, rebound", text(v=RINGING, jumps=steps([3, 60])),
      ARGS + ["--pulse", "5e-8", "--rebound", "0.1", "--jump-column", "3"], 300.0),
     ("other columns", "\n".join(f"{v!r} 7.0 {10 * k} {t!r}" for k, (t, v) in
