@@ -242,7 +242,11 @@ void McaSegmentContact::compute(const NeighList *full, const double *stiffness, 
     const double t = best.t, h = best.h, rk = radius[k];
     const double rs = (1.0 - t) * radius[bi] + t * radius[bj];
     const double h0 = McaSegmentLaw::rest_height(rk, radius[bi], radius[bj], t);
-    if (h >= h0 || h == 0.0) {
+    if (h == 0.0)
+      error->one(FLERR, "Pair mca: element {} of type {} lies on the polyline of the surface's "
+                 "elements {} and {} (height 0): its contact has no normal; place it above the "
+                 "surface", atom->tag[k], kt, atom->tag[bi], atom->tag[bj]);
+    if (h >= h0) {
       xi[k] = 0.0;
       continue;
     }

@@ -319,6 +319,23 @@ def test_bad_segment_coefficients(coeff, message):
             lmp.command(coeff)
 
 
+@pytest.mark.parametrize("units", ["lj", "si"])
+def test_an_element_on_the_polyline_itself_is_an_error(units):
+    """A disc of type 2 placed at the midpoint of two touching surface discs (height 0): no
+    normal, so an error naming it, not a silent lack of force."""
+    with session() as lmp:
+        head, coeff = substrate(units)
+        lmp.commands_list(head)
+        x = lmp.numpy.extract_atom("x")[:lmp.extract_global("nlocal")]
+        row = x[np.isclose(x[:, 1], x[:, 1].max())]
+        row = row[np.argsort(row[:, 0])]
+        mid = 0.5 * (row[0] + row[1])
+        lmp.command(f"create_atoms 2 single {mid[0]!r} {mid[1]!r} 0 units box")
+        lmp.commands_list(finish(units, coeff))
+        with pytest.raises(Exception, match=r"element \d+ of type 2 lies on the polyline"):
+            lmp.command("run 0")
+
+
 def test_a_link_line_for_a_pair_of_types_that_meets_by_segments_is_refused():
     with session() as lmp:
         head, _ = substrate("lj")
