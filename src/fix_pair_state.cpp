@@ -232,13 +232,15 @@ void FixPairState::check_lost_links()
                "read_dump ...) farther than the list's cutoff from their linked partners; move "
                "them less, or delete the atoms or restart the links (pair_style anew)",
                owner ? owner->who() : "Pair state", lost, id);
-  if (lost > 0.25)
-    error->all(FLERR, "{}: {:.0f} links left the neighbour list unbroken (fix {}): their atoms are "
-               "farther apart than the list's cutoff; raise the neighbor skin or comm_modify "
+  if (lost > 0.25) {
+    const std::string why = owner ? owner->lost_links_explained() : std::string();
+    error->all(FLERR, "{}: {:.0f} links left the neighbour list unbroken (fix {}): {}their atoms "
+               "are farther apart than the list's cutoff; raise the neighbor skin or comm_modify "
                "cutoff{}, and do not exclude linked pairs (neigh_modify exclude)",
-               owner ? owner->who() : "Pair state", lost, id,
+               owner ? owner->who() : "Pair state", lost, id, why.empty() ? "" : why + "; else ",
                update->whichflag == 2 ? " or reduce min_modify dmax (a line search's trial "
                "point moved them)" : "");
+  }
   if (gone_all > 0.0 && comm->me == 0)
     utils::logmesg(lmp, "{}: {:.0f} links ended with their deleted atoms\n",
                    owner ? owner->who() : "Pair state", gone_all);

@@ -231,6 +231,15 @@ void McaElementEos::beyond_limit(int i, double ratio) const
   std::abort();    // not reached: error->one() throws
 }
 
+double McaElementEos::smallest_volume_ratio() const
+{
+  double mine = 1.0, all;
+  for (int i = 0; i < atom->nlocal; i++)
+    if (laws[atom->type[i]].bulk > 0.0) mine = MIN(mine, 1.0 + atom->dvector[dvolume][i]);
+  MPI_Allreduce(&mine, &all, 1, MPI_DOUBLE, MPI_MIN, world);
+  return all;
+}
+
 void McaElementEos::begin_heat(int nall)
 {
   for (int i = 0; i < nall; i++) heat[i][0] = 0.0;

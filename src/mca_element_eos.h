@@ -86,6 +86,9 @@ namespace ClusterDyn {
     }
     void finish(Advance how, double dt);
 
+    // the smallest volume ratio J of the elements with a shock law (all processors; 1: none)
+    double smallest_volume_ratio() const;
+
     // whether element i (owned or ghost) has a shock law and links that span a volume
     bool has_volume(int i) const { return pressures[i][HAS_VOLUME] > 0.0; }
 

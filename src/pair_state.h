@@ -28,6 +28,7 @@
 #include "pointers.h"
 
 #include <cstdio>
+#include <functional>
 #include <string>
 
 namespace LAMMPS_NS {
@@ -114,6 +115,10 @@ namespace ClusterDyn {
     bool made() const { return made_flag; }
     StateView view() const;
     const char *who() const { return name.c_str(); }
+    // what the owner can say when links leave the neighbour list during a run (called on every
+    // processor: it may communicate); empty: nothing
+    void explain_lost_links(std::function<std::string()> why) { lost_links = std::move(why); }
+    std::string lost_links_explained() const { return lost_links ? lost_links() : std::string(); }
     void write_restart(FILE *);
     void read_restart(FILE *);
 
@@ -130,6 +135,7 @@ namespace ClusterDyn {
    private:
     Pair *pair;
     std::string name;          // the pair style, for messages
+    std::function<std::string()> lost_links;    // explain_lost_links()
     int nvalues, nwork;
     int enabled, made_flag;
     int afresh;                // re-issued before the fix was made: forget restored links

@@ -4,6 +4,8 @@ runs (change_box ... remap, displace_atoms) compresses the elements as a run's s
 the pressure after the same strain by fix deform, and the pole 1 - 1/s is an error wherever the
 volume crosses it.  Aluminium (test_mca_shock.py), a periodic 6 x 3 x 3 fcc block, uniaxial
 strain 2 %, units si and metal."""
+import re
+
 import numpy as np
 import pytest
 
@@ -143,3 +145,18 @@ def test_two_linked_yielding_shock_elements_do_not_pass_through(units):
             lmp.command("run 20 post no")
             gaps.append(lmp.extract_variable("gap"))
     assert min(gaps) > 0.8 * D * L
+
+
+@pytest.mark.parametrize("units", ["si", "metal"])
+def test_uniaxial_compression_past_the_lattice_limit_names_it(tmp_path, units):
+    """fix deform halving a periodic block along x: near V/V0 = 0.64 the lattice buckles and
+    links leave the list; the error says the elements were compressed that far, not only that
+    the skin is short."""
+    from conftest import lmp_error
+    lines = plate_setup(units, 6, boundary="p p p") + [
+        "fix 1 all nve/sphere", "fix 2 all deform 1 x scale 0.5 remap x", "run 10000"]
+    out = lmp_error(tmp_path, lines)
+    m = re.search(r"links left the neighbour list unbroken \(fix \S+\): the shock-law elements "
+                  r"are compressed to V/V0 = ([\d.]+) at the least: a lattice of elements", out)
+    assert m, out[-1500:]
+    assert 0.55 < float(m.group(1)) < 0.8
