@@ -93,3 +93,36 @@ TEST(McaElementShape, GradientOfAnAffineDisplacementIsItsMatrix)
   for (int a = 0; a < 3; a++)
     for (int b = 0; b < 3; b++) EXPECT_NEAR(grad[a][b], h[a][b], 1e-15);
 }
+
+// a disordered neighbourhood: every entry of K is different and none is zero, so each cofactor
+// of K^-1 is exercised (fcc's K is 4 I)
+TEST(McaElementShape, InverseOfAGeneralShapeIsItsInverse)
+{
+  const double links[7][3] = {{1.0, 0.2, -0.1}, {-0.3, 1.1, 0.4},  {0.2, -0.5, 0.9},
+                              {-0.8, -0.6, 0.3}, {0.5, 0.7, -0.9}, {0.1, -1.0, -0.6},
+                              {-0.9, 0.4, 0.2}};
+  double s[15] = {0}, inv[6];
+  shape(links, 7, s);
+  for (int k = 3; k < 6; k++) ASSERT_GT(std::fabs(s[k]), 0.05);
+  ASSERT_TRUE(McaElementShape::invert(s, inv));
+  const double K[3][3] = {{s[0], s[3], s[4]}, {s[3], s[1], s[5]}, {s[4], s[5], s[2]}};
+  const double I[3][3] = {{inv[0], inv[3], inv[4]}, {inv[3], inv[1], inv[5]},
+                          {inv[4], inv[5], inv[2]}};
+  for (int a = 0; a < 3; a++)
+    for (int b = 0; b < 3; b++) {
+      double sum = 0.0;
+      for (int c = 0; c < 3; c++) sum += K[a][c] * I[c][b];
+      EXPECT_NEAR(sum, a == b ? 1.0 : 0.0, 1e-13) << a << b;
+    }
+  // and the gradient of an affine displacement of these links is its matrix
+  const double h[3][3] = {{0.01, 0.002, -0.003}, {0.0, -0.02, 0.004}, {0.001, 0.0, 0.005}};
+  for (int j = 0; j < 7; j++)
+    for (int a = 0; a < 3; a++) {
+      const double dx = h[a][0] * links[j][0] + h[a][1] * links[j][1] + h[a][2] * links[j][2];
+      for (int b = 0; b < 3; b++) s[6 + 3 * a + b] += dx * links[j][b];
+    }
+  double grad[3][3];
+  McaElementShape::gradient(s, inv, grad);
+  for (int a = 0; a < 3; a++)
+    for (int b = 0; b < 3; b++) EXPECT_NEAR(grad[a][b], h[a][b], 1e-14);
+}

@@ -457,3 +457,26 @@ for rid, args, message in [
 @pytest.mark.parametrize("setup,cmds,expect,isolate", INPUTS.rows)
 def test_hostile_input(setup, cmds, expect, isolate):
     check_input(setup, cmds, expect, isolate)
+
+
+@pytest.mark.parametrize("units,scale", [("lj", 1.0), ("si", 1.0e-5)])
+@pytest.mark.parametrize("first", [1, 2])
+def test_two_types_bond_at_their_own_pair_cutoff(units, scale, first):
+    """Three type pairs with three cutoffs (morse/spline cut 1.3: a = 1, 1.5, 2 for 1-1, 1-2,
+    2-2: cutoffs 1.3, 1.95, 2.6): a type-1 and a type-2 atom 1.6 apart are one fragment by their
+    own pair's cutoff, two atoms of type 1 1.6 apart are two (compute pair/params' oracle: the
+    pair style's cutoffs; either type first)."""
+    x = {first: 0.0, 3 - first: 1.6 * scale}
+    with session() as lmp:
+        lmp.commands_list([
+            f"units {units}", "atom_modify map array",
+            f"region box block {-5 * scale} {8 * scale} {-5 * scale} {5 * scale} {-5 * scale} "
+            f"{5 * scale} units box", "create_box 2 box", "mass * 1.0",
+            f"create_atoms {first} single {x[first]!r} 0 0 units box",
+            f"create_atoms {3 - first} single {x[3 - first]!r} 0 0 units box",
+            f"create_atoms 1 single {4.0 * scale!r} 0 0 units box",
+            f"create_atoms 1 single {5.6 * scale!r} 0 0 units box",
+            f"neighbor {0.3 * scale!r} bin", "pair_style morse/spline cut 1.3",
+            f"pair_coeff 1 1 1.0 6.0 {scale!r}", f"pair_coeff 2 2 1.0 6.0 {2 * scale!r}",
+            f"pair_coeff 1 2 1.0 6.0 {1.5 * scale!r}", "compute d all dust", "run 0 post no"])
+        assert lmp.numpy.extract_compute("d", 0, 1)[5] == 3      # {1-2 pair}, {1}, {1}

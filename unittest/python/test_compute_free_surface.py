@@ -166,6 +166,28 @@ def test_jumps_count_a_face_that_leaves_its_path(units):
     assert still[3] == 1 and gone[:3] == [0.0, 0.0, 0.0] and gone[3] == 2
 
 
+@pytest.mark.parametrize("units", ["lj", "si"])
+def test_an_accelerating_face_is_no_jump(units):
+    """The block and its piece pushed by a uniform force (acceleration 0.5 a / tau^2),
+    evaluated every 3 tau: the face moves by the mean of its two velocities times the interval
+    exactly; its new velocity alone would put it 0.5 g T^2 = 2.25 a off, beyond the depth 1.5 a.
+    No jump, and the face where x0 + g t^2 / 2 puts it."""
+    a, m, D = (1.0, 1.0, 1.0) if units == "lj" else (1e-5, 2.338e-12, 2.46e-6)
+    tau = math.sqrt(m * a * a / D)
+    g = 0.5 * a / tau ** 2
+    with session() as lmp:
+        lmp.commands_string(PIECE.replace("block -2 18", "block -2 118").format(
+            units=units, a=a, m=m, D=D, alpha=3.76 / a, skin=0.2 * a, depth=1.5 * a))
+        lmp.commands_list(["velocity all set 0.0 0.0 0.0", "fix nve all nve",
+                           f"fix push all addforce {m * g!r} 0.0 0.0",
+                           f"timestep {0.01 * tau!r}", "thermo 300", "run 900"])
+        layer = [lmp.extract_compute("layer", 0, 1)[i] for i in range(4)]
+    t = 9.0 * tau
+    assert layer[0] == pytest.approx(g * t, rel=1e-6)
+    assert layer[1] == pytest.approx(13 * a + 0.5 * g * t * t, rel=1e-6)
+    assert layer[3] == 0
+
+
 @pytest.mark.parametrize("step", [0, 1000])
 def test_a_reset_clock_is_no_jump(step):
     """reset_timestep (back to 0, or forward) between evaluations of a moving block: the

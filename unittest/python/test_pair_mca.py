@@ -751,3 +751,30 @@ row("mca-units-metal-default-skin", scene_mca(units="metal"),
 @pytest.mark.parametrize("setup,cmds,expect,isolate", INPUTS.rows)
 def test_hostile_input(setup, cmds, expect, isolate):
     check_input(setup, cmds, expect, isolate)
+
+
+@pytest.mark.parametrize("units,scale", [("lj", 1.0), ("si", 1.0e-5)])
+@pytest.mark.parametrize("first", [1, 2])
+def test_two_sizes_link_at_their_own_pair_cutoff(units, scale, first):
+    """Elements of two types and sizes (diameters 1 and 2) touching at 1.5: the type pair's
+    cutoff is made from both types' largest elements, 1.25 (1 + T)(R1 + R2), so they link and
+    pull back when parted a little (a cutoff made from one type's size twice, 1.3125 for type 1,
+    would miss them); either type created first."""
+    order = [(first, 0.0), (3 - first, 1.5 * scale)]
+    with session() as lmp:
+        lmp.commands_list([
+            f"units {units}", "atom_style sphere", "atom_modify map array", "comm_modify vel yes",
+            f"region box block {-4 * scale} {5 * scale} {-4 * scale} {4 * scale} {-4 * scale} "
+            f"{4 * scale} units box", "create_box 2 box"]
+            + [f"create_atoms {t} single {x!r} 0 0 units box" for t, x in order]
+            + [f"set type 1 diameter {scale!r}", f"set type 2 diameter {2 * scale!r}",
+               "set group all density 1.0", f"neighbor {0.1 * scale!r} bin",
+               "pair_style mca fraction 0.74048", "pair_coeff * * young 1.0 poisson 0.25",
+               "compute l all links/atom", "fix 1 all nve/sphere", "run 0 post no"])
+        n = lmp.extract_global("nlocal")
+        links = lmp.numpy.extract_compute("l", LMP_STYLE_ATOM, 1)[:n]
+        assert list(links) == [1, 1]
+        lmp.commands_list(["group two id 2", f"displace_atoms two move {0.01 * scale!r} 0 0 units box",
+                           "run 0 post no"])
+        f = lmp.numpy.extract_atom("f")[:n]
+        assert f[1, 0] < 0.0 < f[0, 0]           # the link pulls them together
