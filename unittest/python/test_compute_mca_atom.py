@@ -149,7 +149,7 @@ def test_shear_modulus_by_tilt_once_the_elements_turn(units):
                            "run 3000"])
         turned = (lmp.get_thermo("pe"), lmp.extract_compute("p", LMP_STYLE_GLOBAL,
                                                             LMP_TYPE_VECTOR)[3],
-                  per_atom(lmp)[:, 3])
+                  per_atom(lmp)[:, 3], per_atom(lmp)[:, 7])
         vol = lmp.get_thermo("vol")
         nktv2p = lmp.extract_global("nktv2p")
     energy = 0.5 * g * gamma ** 2 * vol / nktv2p
@@ -159,6 +159,8 @@ def test_shear_modulus_by_tilt_once_the_elements_turn(units):
     assert turned[1] == pytest.approx(-g * gamma, rel=1e-5)
     assert np.allclose(turned[2], g * gamma, rtol=1e-5)
     assert turned[0] == pytest.approx(energy, rel=1e-3)
+    # a pure shear's von Mises stress is sqrt(3) tau (each shear term counted twice)
+    assert np.allclose(turned[3], math.sqrt(3.0) * g * gamma, rtol=1e-4)
 
 
 # ---------------------------------------------------------------- hostile input
