@@ -570,3 +570,15 @@ def test_a_drop_below_one_percent_of_the_peak_is_no_pull_back():
         else:
             with pytest.raises(ValueError, match="less than 1 % of it"):
                 pull_back(t, v, 0.5, window=0.0)
+
+
+def test_a_rise_of_two_slopes_reads_its_10_and_90_percent_points():
+    """Records on the corners, no smoothing: the spall pulse's front rises by 28 m/s in its first
+    ns (the 10 % point, 274 m/s, at 57.5 ns) and by 112 in the next 6 (the 90 % point, 386 m/s,
+    at 63.25 ns): u2' = 112 m/s / 5.75 ns; the release falls 140 m/s in 5 ns (u1' = -28 m/s/ns)."""
+    t = np.arange(101) * NS
+    v = shape([0, 10, 12, 42, 47, 57, 58, 64, 100], [0, 0, 400, 400, 260, 260, 288, 400, 400], t)
+    r = spall_strength(t, v, 60e-9, 2700.0, 6386.0, 5288.0, 1.41e-4, window=0.0)
+    assert r.du == pytest.approx(140.0, rel=1e-12)
+    assert r.u1 == pytest.approx(-140.0 / 5e-9, rel=1e-12)
+    assert r.u2 == pytest.approx(112.0 / 5.75e-9, rel=1e-12)
