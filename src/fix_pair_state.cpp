@@ -227,11 +227,12 @@ void FixPairState::check_lost_links()
 
   const double lost = 0.5 * (all[0] - 2.0 * all[1] - gone_all);    // links, not ends
   if (lost > 0.25 && update->setupflag)
-    error->all(FLERR, "{}: {:.0f} links left the neighbour list unbroken (fix {}) before this "
-               "run: atoms were moved since the last run (displace_atoms, set, change_box, "
-               "read_dump ...) farther than the list's cutoff from their linked partners; move "
-               "them less, or delete the atoms or restart the links (pair_style anew)",
-               owner ? owner->who() : "Pair state", lost, id);
+    error->all(FLERR, "{}: {:.0f} links left the neighbour list unbroken (fix {}): their atoms "
+               "are farther apart than the list's cutoff before this run: atoms were moved since "
+               "the last run (displace_atoms, set, change_box, read_dump ...) or linked pairs "
+               "excluded (neigh_modify exclude); move them less, keep linked pairs in the list, "
+               "or restart the links (pair_style anew)", owner ? owner->who() : "Pair state",
+               lost, id);
   if (lost > 0.25) {
     const std::string why = owner ? owner->lost_links_explained() : std::string();
     error->all(FLERR, "{}: {:.0f} links left the neighbour list unbroken (fix {}): {}their atoms "

@@ -447,5 +447,6 @@ def test_links_moved_away_between_runs_are_named_as_a_move(tmp_path, units, scal
              f"timestep {0.002 * (1.0 if units == 'lj' else 1e-8)}", "run 10",
              "group one id 1", f"displace_atoms one move {3.0 * a} 0 0 units box", "run 10"]
     out = lmp_error(tmp_path, lines)
-    assert re.search(r"links left the neighbour list unbroken \(fix \S+\) before this run: atoms "
-                     r"were moved since the last run", out), out[-1500:]
+    assert re.search(r"links left the neighbour list unbroken \(fix \S+\): their atoms are farther "
+                     r"apart than the list's cutoff before this run: atoms were moved since the "
+                     r"last run", out), out[-1500:]
