@@ -36,6 +36,7 @@
 
 #include "pointers.h"
 
+#include <string>
 #include <vector>
 
 namespace LAMMPS_NS {
@@ -86,8 +87,9 @@ namespace ClusterDyn {
     }
     void finish(Advance how, double dt);
 
-    // the smallest volume ratio J of the elements with a shock law (all processors; 1: none)
-    double smallest_volume_ratio() const;
+    // why links left the neighbour list, where the elements' compression explains it (all
+    // processors); empty: it does not
+    std::string lost_links_reason() const;
 
     // whether element i (owned or ghost) has a shock law and links that span a volume
     bool has_volume(int i) const { return pressures[i][HAS_VOLUME] > 0.0; }

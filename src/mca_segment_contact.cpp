@@ -41,6 +41,20 @@ void McaSegmentContact::allocate(int n)
   rough.assign((n + 1) * (n + 1), McaRoughness());
 }
 
+void McaSegmentContact::refuse_link(char **arg) const
+{
+  const std::string who = "Pair mca pair_coeff";
+  int ilo, ihi, jlo, jhi;
+  type_range(who, "I", arg[0], ntypes, ilo, ihi, lmp);
+  type_range(who, "J", arg[1], ntypes, jlo, jhi, lmp);
+  for (int i = ilo; i <= ihi; i++)
+    for (int j = jlo; j <= jhi; j++)
+      if (i != j && between(i, j))
+        error->all(FLERR, "{}: types {} and {} meet by contact segments (pair_coeff {} {} "
+                   "segments): they never link, link does not apply", who, i, j, MIN(i, j),
+                   MAX(i, j));
+}
+
 /* ----------------------------------------------------------------------
    pair_coeff I J segments mu0 [viscous eta0] [limit sigma0]
               [roughness A1 l1 d1 A2 l2 d2 seed]

@@ -46,6 +46,9 @@ namespace ClusterDyn {
     void allocate(int ntypes);
     // pair_coeff I J segments ... (arg: all of pair_coeff's words)
     void coeff(int narg, char **arg);
+    // pair_coeff I J ... link yes|no (arg: I J ...; the value last) for types that meet by
+    // segments: an error (they never link, the line would not apply)
+    void refuse_link(char **arg) const;
     bool active() const { return any; }
     // types it and jt meet by segments (either order)
     bool between(int it, int jt) const

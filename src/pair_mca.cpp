@@ -12,7 +12,6 @@
 
 #include "pair_mca.h"
 
-#include "arg_values.h"
 #include "mca_linked_pair.h"
 #include "mca_pair_walk.h"
 #include "mca_unlinked_pair.h"
@@ -364,18 +363,7 @@ void PairMCA::coeff(int narg, char **arg)
     segments.coeff(narg, arg);
     return;
   }
-  // a pair of types that meets by contact segments never links: link yes|no would be ignored
-  if (narg >= 4 && strcmp(arg[narg - 2], "link") == 0) {
-    int ilo, ihi, jlo, jhi;
-    type_range("Pair mca pair_coeff", "I", arg[0], atom->ntypes, ilo, ihi, lmp);
-    type_range("Pair mca pair_coeff", "J", arg[1], atom->ntypes, jlo, jhi, lmp);
-    for (int i = ilo; i <= ihi; i++)
-      for (int j = jlo; j <= jhi; j++)
-        if (i != j && segments.between(i, j))
-          error->all(FLERR, "Pair mca pair_coeff: types {} and {} meet by contact segments "
-                     "(pair_coeff {} {} segments): they never link, link {} does not apply", i,
-                     j, MIN(i, j), MAX(i, j), arg[narg - 1]);
-  }
+  if (narg >= 4 && strcmp(arg[narg - 2], "link") == 0) segments.refuse_link(arg);
   types.coeff(narg, arg);
 }
 
@@ -402,17 +390,7 @@ void PairMCA::init_style()
   plasticity.init(types.as_given(), setting.plane == McaSettings::STRAIN);
   segments.init();
   report.print(types, setting.fraction);
-  state.explain_lost_links([this]() -> std::string {
-    if (!eos.active()) return "";
-    const double least = eos.smallest_volume_ratio();
-    if (least > 0.8) return "";
-    return fmt::format("the shock-law elements are compressed to V/V0 = {:.3g} at the least: a "
-                       "lattice of elements compressed below about 0.65 of its volume along one "
-                       "axis (fix deform, a piston) buckles under its pressure forces whatever "
-                       "the time step (measured: fcc [100], aluminium, at 0.62-0.64 with and "
-                       "without yield), and its elements scatter; it is the model's limit, not "
-                       "the skin's", least);
-  });
+  state.explain_lost_links([this] { return eos.lost_links_reason(); });
   neighbor->add_request(this, NeighConst::REQ_HISTORY);
   if (segments.active()) neighbor->add_request(this, NeighConst::REQ_FULL)->set_id(1);
   state.init();
