@@ -271,10 +271,12 @@ void McaSegmentContact::compute(const NeighList *full, const double *stiffness, 
     const double a =
         McaContact::series(stiffness[k], (1.0 - t) * stiffness[bi] + t * stiffness[bj]);
     double enormal, espring = 0.0, work = 0.0;
-    const double fn = McaSegmentLaw::normal(1.5 * s * a, h0, h, enormal);
+    const double kn = 1.5 * s * a;
+    const double fn = McaSegmentLaw::normal(kn, h0, h, enormal);
     const double *n = best.n, *e = best.e;
     double vrel[2];
     for (int c = 0; c < 2; c++) vrel[c] = v[k][c] - (1.0 - t) * v[bi][c] - t * v[bj][c];
+    if (h < 0.5 * h0) refuse_passage(k, bi, bj, h, h0, kn, -(n[0] * vrel[0] + n[1] * vrel[1]));
     const double wseg = (1.0 - t) * omega[bi][2] + t * omega[bj][2];
     const double vt = e[0] * vrel[0] + e[1] * vrel[1] - rk * omega[k][2] - (h - rk) * wseg;
     const double xref = reference_x(bi, bj, t, x0, x0_set);
@@ -319,6 +321,25 @@ void McaSegmentContact::compute(const NeighList *full, const double *stiffness, 
       pair.ev_tally3(bi, bj, k, enormal + espring, 0.0, fj, fk, dji, dki);
     }
   }
+}
+
+/* ----------------------------------------------------------------------
+   k below half its rest height: the linear contact k_n (h0 - h) stores
+   k_n h0^2 / 8 there, so it is going through the surface, whose far side
+   would push it on (h is a distance, n turns over)
+------------------------------------------------------------------------- */
+
+void McaSegmentContact::refuse_passage(int k, int bi, int bj, double h, double h0, double kn,
+                                       double closing) const
+{
+  const double stop = 0.5 * h0 * sqrt(kn / (atom->rmass[k] * force->mvv2e));
+  error->one(FLERR, "Pair mca: element {} of type {} is {:.4g} from the polyline of the "
+             "surface's elements {} and {}, below half its rest height {:.4g}, closing at {:.4g}: "
+             "it is going through the surface.  The contact (normal stiffness 3/2 S a = {:.4g}) "
+             "stops this element only below a closing speed of {:.4g} (velocity units); "
+             "lower the impact speed, or the time step where one step carries it that far "
+             "(doc: Contact segments and micro-roughness)", atom->tag[k], atom->type[k], h, atom->tag[bi],
+             atom->tag[bj], h0, closing, kn, stop);
 }
 
 /* ---------------------------------------------------------------------- */

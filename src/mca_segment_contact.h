@@ -90,6 +90,10 @@ namespace ClusterDyn {
     // the reference x of the foot at t of segment (i, j): its elements' reference x (their
     // difference by the minimum image in a periodic x), or their x where not set yet
     double reference_x(int i, int j, double t, const double *x0, const int *set) const;
+    // k is below half its rest height over segment (bi, bj): an error naming it, its closing
+    // speed and the largest the contact stops
+    void refuse_passage(int k, int bi, int bj, double h, double h0, double kn,
+                        double closing) const;
     static void pack(const Given &g, double *v);
     static void unpack(const double *v, Given &g);
   };

@@ -11,10 +11,12 @@ Amontons' law with roughness (the mean friction coefficient does not depend on t
 3 %); the review's fall of the fluctuation with the element size; serial against 2 ranks; a
 straight run against a restarted one.  Units lj and si.  The table of hostile input."""
 import math
+import re
 
 import numpy as np
 import pytest
-from conftest import PLUGIN, run_lmp, session, thermo_rows, worst_energy_error
+from conftest import (PLUGIN, lmp_error, run_lmp, session, thermo_rows,
+                      worst_energy_error)
 
 TRIANGULAR = math.pi / math.sqrt(12.0)
 # element radius, Young's modulus and time step of each unit style's order
@@ -536,3 +538,96 @@ def test_a_surface_of_two_types_interpolates_its_laws(tmp_path):
     one = two_surface_types(1, tmp_path)
     assert one == pytest.approx(0.3, rel=0.02)
     assert two_surface_types(2, tmp_path) == pytest.approx(one, rel=1e-9)
+
+
+def drop(units, y0, speed, gap, dt):
+    """A disc of type 2 dropped at `speed` on the held row from `gap` above its rest height."""
+    r, _ = SCALE[units]
+    head, coeff = substrate(units, coeff="pair_coeff 1 2 segments 0.0")
+    return head + [f"create_atoms 2 single {2.0 * r * 1.75!r} {y0 + math.sqrt(3.0) * r + gap!r} 0 "
+                   "units box"] + finish(units, coeff, [
+                       "group pts type 2", f"velocity pts set 0 {-speed!r} 0 units box",
+                       "fix move pts nve/sphere", f"timestep {dt!r}"])
+
+
+@pytest.mark.parametrize("units", ["lj", "si"])
+def test_an_element_going_through_the_surface_is_an_error(units, tmp_path):
+    """The contact's spring of depth h0 stores k_n h0^2/8 at half the rest height: it stops a
+    disc of mass m closing at v < v1 = (h0/2) sqrt(k_n/m).  Dropped on a held row at 0.3 v1
+    the disc bounces back at its speed (frictionless, elastic: 1 %); at 1.5 v1 and at three
+    times the longitudinal wave speed the run stops, naming the disc, its closing speed and
+    v1 (3 digits), instead of letting it through."""
+    r, e = SCALE[units]
+    s, a = stiffness(units)
+    mass = math.pi * r * r / TRIANGULAR
+    h0 = math.sqrt(3.0) * r
+    v1 = 0.5 * h0 * math.sqrt(1.5 * s * a / mass)    # lj and si: force and mvv2e are 1
+    lam = e * NU / ((1.0 + NU) * (1.0 - 2.0 * NU))
+    wave = math.sqrt((lam + e / (1.0 + NU)) / (mass / (2.0 * math.sqrt(3.0) * r * r)))
+    dt = 0.01 * r / wave
+    with session() as lmp:
+        scene(lmp, units, [])
+        y0 = row_top(lmp)
+    with session() as lmp:
+        lmp.commands_list(drop(units, y0, 0.3 * v1, 0.05 * r, dt))
+        lmp.command(f"run {int(4.0 * r / (0.3 * v1 * dt))}")
+        v = lmp.numpy.extract_atom("v")[:lmp.extract_global("nlocal")]
+        ty = lmp.numpy.extract_atom("type")[:lmp.extract_global("nlocal")]
+        assert v[ty == 2, 1][0] == pytest.approx(0.3 * v1, rel=0.01)
+    for speed in (1.5 * v1, 3.0 * wave):
+        out = lmp_error(tmp_path, drop(units, y0, speed, 0.05 * r, dt) + ["run 2000"])
+        found = re.search(r"element (\d+) of type 2 is \S+ from the polyline .* below half its "
+                          r"rest height \S+, closing at (\S+): it is going through the surface"
+                          r".* closing speed of (\S+) ", " ".join(out.split()))
+        assert found, out[-1500:]
+        assert float(found.group(3)) == pytest.approx(v1, rel=1e-3)
+        assert 0.5 * speed < float(found.group(2)) <= speed
+
+
+@pytest.mark.parametrize("units", ["lj", "si"])
+def test_spinning_surface_and_element_load_the_spring_at_their_arms(units):
+    """A pressed disc at t = 0.4 of a segment, nothing translating: the row's elements spin at
+    w and the disc at -w/2.  One step (no integrator: positions held) slides the contact points
+    by V_t dt with V_t = -R_k w_k - (h - R_k) w_s (the segment's point at its arm h - R_k
+    below k's contact point); the spring pulls k with -S a V_t dt along e = (-1, 0), and
+    (less the row's own forces, from the same run without the disc) the segment's ends take -(1 - t) and -t of it with torques -(1 - t)(h - R_k) F_t and
+    -t (h - R_k) F_t (1e-9)."""
+    r, _ = SCALE[units]
+    s, a = stiffness(units)
+    delta, t = 0.02 * r, 0.4
+    with session() as lmp:
+        scene(lmp, units, [])
+        y0 = row_top(lmp)
+        x, _, _, ty = arrays(lmp)
+    xs = np.sort(x[(ty == 1) & (np.abs(x[:, 1] - y0) < 1e-9 * r), 0])
+    xi, xj = xs[2], xs[3]
+    h = math.sqrt(3.0) * r - delta
+    w, dt = 1.0e-3 / r * (1.0 if units == "lj" else 1.0e4), 0.005 * (1.0 if units == "lj" else 1e-6)
+    runs = []
+    for disc in (False, True):    # the row's own spinning pairs: the run without the disc
+        with session() as lmp:
+            head, coeff = substrate(units, coeff="pair_coeff 1 2 segments 1e6")
+            lmp.commands_list(head)
+            if disc:
+                lmp.command(f"create_atoms 2 single {xi + t * (xj - xi)!r} {y0 + h!r} 0 units box")
+            lmp.commands_list(finish(units, coeff, [f"set type 1 omega 0 0 {w!r}",
+                                                    f"set type 2 omega 0 0 {-0.5 * w!r}",
+                                                    f"timestep {dt!r}", "run 1"]))
+            order = np.argsort(lmp.numpy.extract_atom("id")[:lmp.extract_global("nlocal")])
+            runs.append([q[order] for q in arrays(lmp)])    # by atom ID (run sorts atoms)
+            nktv2p = lmp.extract_global("nktv2p")
+    x, f, torque, ty = runs[1]
+    n = len(runs[0][0])
+    f[:n] -= runs[0][1]
+    torque[:n] -= runs[0][2]
+    vt = -r * (-0.5 * w) - (h - r) * w
+    ft = -s * a / nktv2p * vt * dt    # along e = (-1, 0)
+    k = np.where(ty == 2)[0][0]
+    i = np.where(np.abs(x[:, 0] - xi) + np.abs(x[:, 1] - y0) < 1e-9 * r)[0][0]
+    j = np.where(np.abs(x[:, 0] - xj) + np.abs(x[:, 1] - y0) < 1e-9 * r)[0][0]
+    assert f[k, 0] == pytest.approx(-ft, rel=1e-9)
+    assert f[i, 0] == pytest.approx((1.0 - t) * ft, rel=1e-9)
+    assert f[j, 0] == pytest.approx(t * ft, rel=1e-9)
+    assert torque[k, 2] == pytest.approx(-r * ft, rel=1e-9)
+    assert torque[i, 2] == pytest.approx(-(1.0 - t) * (h - r) * ft, rel=1e-9)
+    assert torque[j, 2] == pytest.approx(-t * (h - r) * ft, rel=1e-9)
