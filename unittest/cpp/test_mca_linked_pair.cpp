@@ -148,3 +148,39 @@ TEST(McaLinkedPair, PressureAddsItsForceAndItsNormalStressBreaks)
   EXPECT_FALSE(s.step(0.5, &pull));
   EXPECT_EQ(s.changes.broken, 1.0);
 }
+
+// A damaged pair (1 - D < 1) that yields: the stress it transmits, (1 - D) sigma~, returns
+// radially about the mean stress of its elements (a transmitted stress, from Love's formula):
+// (1 - D) sigma~' - sigma_m = phi ((1 - D) sigma~ - sigma_m), doc/pair_mca.rst (c); the
+// plastic elongation keeps sigma~' = a (r - r_ref - e_p), tau~ scales by phi, and the work is
+// the transmitted share (1 - D) of the effective energy lost.  Oracle: the return written from
+// the doc, with the response's 1 - D = g(kappa)/kappa.
+TEST(McaLinkedPair, DamagedPairReturnsItsTransmittedStressAboutTheMean)
+{
+  const McaResponse response{1.0, 0.6};
+  const double a = 2.0, r = 1.5, phi = 0.7, mean = 0.3, kappa = 1.2;
+  Link link(1.0, 0.5);
+  link.v[C::KAPPA] = kappa;
+  link.v[C::TAU + 2] = 0.04;
+  McaLinkedPair law(response, link.v, a);
+  const double u = 1.0 - (kappa - 0.6) / (2.0 * (1.0 - 0.6));
+  const double intact = (1.0 - 0.4 * u * u) / kappa;    // g(kappa) / kappa
+  ASSERT_NEAR(law.intact, intact, 1e-15);
+  ASSERT_LT(intact, 0.95);
+  const double n[3] = {1.0, 0.0, 0.0};
+  double moment[3];
+  auto energy = [&]() {
+    return law.energy(n, law.elongation(r), C::dot(link.v + C::TAU, link.v + C::TAU), moment);
+  };
+  const double e_before = energy();
+  double sigma = McaLinkedPair::elastic_stress(link.v, a, r), dv = 0.0;
+  const double sigma0 = sigma;    // 1.0: transmitted intact * 1.0, above the mean 0.3
+  const double work = law.plastic_return(sigma, phi, mean, r, dv);
+  EXPECT_NEAR(intact * sigma - mean, phi * (intact * sigma0 - mean), 1e-15);
+  EXPECT_NEAR(sigma, (mean + phi * (intact * sigma0 - mean)) / intact, 1e-15);
+  EXPECT_NEAR(link.v[C::TAU + 2], phi * 0.04, 1e-17);
+  EXPECT_NEAR(link.v[C::EPL], (sigma0 - sigma) / a, 1e-15);
+  EXPECT_NEAR(sigma, McaLinkedPair::elastic_stress(link.v, a, r), 1e-15);
+  EXPECT_NEAR(work, intact * (e_before - energy()), 1e-15);
+  EXPECT_NEAR(dv, -intact * law.area * (sigma0 - sigma) / a, 1e-15);
+}

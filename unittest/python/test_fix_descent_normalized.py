@@ -1,6 +1,7 @@
 """fix descent/normalized (Chernyshev's quasi-static iteration): each step moves an atom by
 exactly h along its force, h decays to Hmin, the inertia term follows its recurrence and
-survives restart, converged states equal LAMMPS's minimize on the same linked neighbour sets
+survives restart, the velocity is the mean displacement / dt of the steps so far while the memory
+fills, converged states equal LAMMPS's minimize on the same linked neighbour sets
 (in three unit styles), a wall stops an atom where the forces balance, 1 and 2 ranks agree,
 fix halt stops the iteration, bad input stops with an error naming the argument.  Oracles:
 the force direction and h (closed form), an independent recurrence, stock minimize, the
@@ -94,6 +95,28 @@ def test_inertia_adds_k_times_the_mean_of_the_last_m_displacements():
         v = lmp.numpy.extract_atom("v")[:2]
         ids = lmp.numpy.extract_atom("id")[:2]
         assert v[list(ids).index(1), 1] == pytest.approx(-np.mean(d[-m:]) / 0.5, rel=1e-12)
+
+
+@pytest.mark.parametrize("units", ["metal", "si"])
+def test_velocity_is_the_mean_of_the_displacements_so_far_while_the_memory_fills(units):
+    """With inertia M the velocity is the mean of the last min(j, M) displacements / dt: after
+    the first step d_1 / dt (the memory holds one displacement), after the second
+    (d_1 + d_2) / (2 dt), from the M-th on the mean of the last M.  Oracle: the recurrence of
+    inertia_recurrence() along a constant force, in the style's length and time."""
+    a = UNITS[units][1]
+    h, m, k, dt = 0.01 * a, 3, 0.6, {"metal": 0.002, "si": 1.0e-9}[units]
+    disp = inertia_recurrence(h, m, k, 6)
+    with session() as lmp:
+        two_atoms(lmp, units, r=(4.0, 0.0, 0.0), fix=f"h {h} inertia {m} {k}")
+        lmp.commands_list(["fix push one addforce 0.0 -2.0 0.0", f"timestep {dt}", "run 0"])
+        for j in range(1, 7):
+            lmp.command("run 1")
+            ids = list(lmp.numpy.extract_atom("id")[:2])
+            v = lmp.numpy.extract_atom("v")[:2][ids.index(1)]
+            expect = -np.mean(disp[max(0, j - m):j]) / dt
+            assert v[1] == pytest.approx(expect, rel=1e-12), j
+            assert v[0] == 0.0 and v[2] == 0.0
+            assert positions(lmp, 2)[0][1] == pytest.approx(-sum(disp[:j]), rel=1e-12)
 
 
 STRIP = """units {units}

@@ -11,6 +11,11 @@ metal:
 - an impact without fracture keeps its energy (kinetic + rotational + potential, the elements'
   internal energy included) within 1 %; 1 and 2 ranks agree; a restart continues exactly;
 - bad input is refused with the argument named;
+- fix deform to V/V0 = 0.8: every element's bulk viscosity is rho0/J L D (b1 c0 + b2^2 L D)
+  with D from the box's schedule, exact (si; metal within its constants);
+- the hourglass mode kicked over one step: pe(2H) - pe(H) is the spring's energy S b e_hg^2 / 2,
+  b the series of the halves 2 H (K + 4G/3 + 2|p|) / R, at rest and at V/V0 = 0.8 (p on the
+  Hugoniot), one material and two (H = 1, 2.5), to 1e-6 (si, metal);
 - examples/mca-shock reduced: its piston holds the work and pushes rho0 us up (aluminium,
   copper), its plate spalls with the free surface at v, its smd/tlsph reference runs and spalls.
 """
@@ -439,3 +444,159 @@ def test_slow_compression_follows_the_isentrope(ratio):
     assert j_mean == pytest.approx(ratio, rel=2e-3)
     assert u_mean == pytest.approx(u_is, rel=5e-3)
     assert press == pytest.approx(pressure(ratio, u_is), rel=0.02)
+
+
+def by_id(lmp, name):
+    """A per-atom array of the local atoms sorted by id (serial runs)."""
+    n = lmp.extract_global("nlocal")
+    return lmp.numpy.extract_atom(name)[:n][np.argsort(lmp.numpy.extract_atom("id")[:n])].copy()
+
+
+@pytest.mark.parametrize("units", ["si", "metal"])
+def test_bulk_viscosity_takes_the_compressed_density(units):
+    """The periodic elastic block of test_slow_compression_follows_the_isentrope compressed by
+    fix deform at a constant rate to V/V0 = 0.8 in 2000 steps: every element's viscosity is the
+    doc's q = rho L D (b1 c0 + b2^2 L D) with rho = rho0 / J (not rho0), L = 2R, D = -(tr H' +
+    tr H) / (2 dt) from the box lengths of fix deform's linear schedule (H = 1 - l_(n-1) / l_n
+    along x for a homogeneous step; the last evaluation saw the box of step N - 1, after
+    those of N - 2 and N - 3), b1 = 0.06, b2 = 1.2: exact in the style's units (its mvv2e), and
+    in Pa within LAMMPS's metal constants (1e-6); J is the box's ratio."""
+    L, V, R, P, _ = UNITS[units]
+    T = L / V
+    ratio, nsteps = 0.8, 2000
+    setup = [c.replace("boundary s p p", "boundary p p p").replace(f"yield {Y * P}", "")
+             for c in plate_setup(units, 3)]
+    with session() as lmp:
+        lmp.commands_list(setup + ["fix 1 all nve/sphere", "run 0 post no",
+                                   f"fix 2 all deform 1 x scale {ratio} remap x",
+                                   f"run {nsteps} post no"])
+        q = by_id(lmp, "d_mca_viscosity")
+        j = 1.0 + by_id(lmp, "d_mca_dvolume")
+        dt, mvv2e, nktv2p = (lmp.extract_global(k) for k in ("dt", "mvv2e", "nktv2p"))
+
+    def box(k):    # fix deform's box length after step k, over the reference's
+        return 1.0 + (ratio - 1.0) * k / nsteps
+    now, before = 1.0 - box(nsteps - 2) / box(nsteps - 1), 1.0 - box(nsteps - 3) / box(nsteps - 2)
+    assert j == pytest.approx(box(nsteps - 1), rel=1e-6)
+    rate = -0.5 * (before + now) / dt                              # per the style's time
+    size = D * L
+    style = mvv2e * RHO0 * R / j * size * rate * (0.06 * C0 * V + 1.2 ** 2 * size * rate)
+    assert q == pytest.approx(style, rel=1e-10)
+    rate_si = rate * T
+    si = RHO0 / j * D * rate_si * (0.06 * C0 + 1.2 ** 2 * D * rate_si)
+    assert q * nktv2p / P == pytest.approx(si, rel=1e-6)
+    assert si.min() > 8e6    # about 9 MPa: the linear term (0.7 MPa the quadratic one)
+
+
+EV = 1.602176634e-19    # J: metal's energy unit
+KICK = 1.0e-4           # the hourglass mode's step, in element diameters
+
+
+def hourglass_kick(units, ratio, hourglass):
+    """The periodic elastic block of plate_setup(units, 3) (fcc [100], 108 elements, 648 links),
+    compressed along x to V/V0 = ratio by change_box between runs (its elements jump onto the
+    Hugoniot: p = p_H(1 - ratio)), then its x planes of elements kicked alternately by +-KICK d
+    over one step, the hourglass mode (hourglass: the coefficient H of type 1 and of type 2,
+    type 2 on the odd planes).  Returns pe after the step (J), the elements' energy per volume
+    before it (Pa), the positions (SI) at the reference, before and after the step, and the
+    types."""
+    L, V, R, P, _ = UNITS[units]
+    setup = [c.replace("boundary s p p", "boundary p p p").replace("create_box 1 box",
+                                                                    "create_box 2 box")
+             for c in plate_setup(units, 3) if not c.startswith("pair_coeff")]
+    at = setup.index(next(c for c in setup if c.startswith("set group all density")))
+    coeffs = [f"pair_coeff {t} {t} {material(units, 0.0, f'hourglass {h}')[0]}"
+              for t, h in ((1, hourglass[0]), (2, hourglass[1]))]
+    with session() as lmp:
+        lmp.commands_list(setup[:at] + coeffs + setup[at:] + [
+            f"variable odd atom round(x/{CELL * L / 2})%2==1", "group odd variable odd",
+            "set group odd type 2", "fix 1 all nve/sphere", "thermo_style custom step pe",
+            "run 0 post no"])
+        reference = by_id(lmp, "x") / L
+        odd = by_id(lmp, "type") == 2
+        if ratio != 1.0:
+            lmp.commands_list([f"change_box all x scale {ratio} remap", "run 0 post no"])
+        before = by_id(lmp, "x") / L
+        energy = by_id(lmp, "d_mca_energy") * lmp.extract_global("nktv2p") / P
+        n = lmp.extract_global("nlocal")
+        ids = lmp.numpy.extract_atom("id")[:n]
+        kick = KICK * D * L / lmp.extract_global("dt")
+        lmp.numpy.extract_atom("v")[:n, 0] = np.where(odd[ids - 1], -kick, kick)
+        lmp.command("run 1 post no")
+        after = by_id(lmp, "x") / L
+        pe = lmp.get_thermo("pe") * (EV if units == "metal" else 1.0)
+    return pe, energy, reference, before, after, np.where(odd, 2, 1)
+
+
+def hourglass_energy(reference, before, after, types, ratio, hourglass):
+    """The doc's spring energy S b e_hg^2 / 2 summed over the links (the nearest neighbours of
+    the reference lattice): e_hg = dr - r n.(H_i + H_j)/2.n over the step (H_i = sum dx x^T
+    (sum x x^T)^-1 over i's links, equal weights: the least-squares gradient, second order in
+    this mode), S = 3 Omega / (12 R) (12 links), b the series of the halves 2 H (K + 4G/3 +
+    2 |p|) / R, p = p_H(1 - ratio) (SI)."""
+    span = np.array([3 * CELL] * 3)
+    d = reference[None, :, :] - reference[:, None, :]
+    d -= span * np.rint(d / span)
+    dist = np.linalg.norm(d, axis=2)
+    count = np.arange(len(reference))
+    ii, jj = np.where((dist < 1.01 * D) & (count[:, None] < count[None, :]))
+    assert len(ii) == 648
+    span[0] *= ratio
+
+    def separations(x):
+        s = x[jj] - x[ii]
+        return s - span * np.rint(s / span)
+    s0, s1 = separations(before), separations(after)
+    r1 = np.linalg.norm(s1, axis=1)
+    shape, moved = np.zeros((len(reference), 3, 3)), np.zeros((len(reference), 3, 3))
+    for k, xs, dx in ((ii, s1, s1 - s0), (jj, -s1, s0 - s1)):
+        np.add.at(shape, k, xs[:, :, None] * xs[:, None, :])
+        np.add.at(moved, k, dx[:, :, None] * xs[:, None, :])
+    grad = moved @ np.linalg.inv(shape)
+    grad = 0.5 * (grad + np.transpose(grad, (0, 2, 1)))
+    n = s1 / r1[:, None]
+    affine = r1 * np.einsum("pi,pij,pj->p", n, 0.5 * (grad[ii] + grad[jj]), n)
+    e_hg = r1 - np.linalg.norm(s0, axis=1) - affine
+    radius = D / 2
+    area = 3 * (4 * math.pi * radius ** 3 / (3 * PHI)) / (12 * radius)
+    eta = 1.0 - ratio
+    p = K * eta / (1.0 - S * eta) ** 2
+    h = np.where(types == 1, hourglass[0], hourglass[1])
+    bi, bj = (2 * h[k] * (K + 4 * G / 3 + 2 * p) / radius for k in (ii, jj))
+    return np.sum(0.5 * area * bi * bj / (bi + bj) * e_hg ** 2), p
+
+
+def hourglass_check(units, ratio, hourglass):
+    """pe(2H) - pe(H) over the same step (the kick moves the elements; the spring's force
+    comes after) is the spring's energy at H: every other term of pe is the same; to 1e-6
+    (the step changes p by 3e-7 of itself)."""
+    pe1, energy, reference, before, after, types = hourglass_kick(units, ratio, hourglass)
+    pe2 = hourglass_kick(units, ratio, [2 * h for h in hourglass])[0]
+    spring, p = hourglass_energy(reference, before, after, types, ratio, hourglass)
+    # the change_box jump lands on the Hugoniot: u = p_H eta / 2 per reference volume (metal:
+    # within LAMMPS's constants, nktv2p 1.6021765e6)
+    assert energy == pytest.approx(0.5 * p * (1.0 - ratio), rel=1e-9 if units == "si" else 1e-6,
+                                   abs=1e-6)
+    assert pe2 - pe1 == pytest.approx(spring, rel=1e-6)
+    return spring
+
+
+@pytest.mark.parametrize("units", ["si", "metal"])
+def test_hourglass_spring_holds_half_s_b_e_squared(units):
+    """The hourglass spring of a link at rest pressure: energy S b e_hg^2 / 2 (doc/pair_mca.rst
+    "The hourglass spring"), b = H (K + 4G/3) / R for two equal halves."""
+    assert hourglass_check(units, 1.0, (1.0, 1.0)) > 1e-10
+
+
+@pytest.mark.parametrize("units", ["si", "metal"])
+def test_hourglass_spring_stiffens_with_the_pressure(units):
+    """At V/V0 = 0.8 (p = 28.9 GPa, 2|p| half of K + 4G/3): each half is 2 H (K + 4G/3 +
+    2 |p|) / R."""
+    hourglass_check(units, 0.8, (1.0, 1.0))
+
+
+@pytest.mark.parametrize("units", ["si", "metal"])
+def test_hourglass_spring_of_two_materials_takes_each_half_in_series(units):
+    """Alternate planes of two materials, H = 1 and 2.5: every link of the mode joins the two,
+    b = b_1 b_2 / (b_1 + b_2) (not one element's half twice), compressed to V/V0 = 0.8."""
+    hourglass_check(units, 0.8, (1.0, 2.5))
