@@ -218,7 +218,8 @@ void ComputePairParams::evaluate()
   const double d = -probe->energy(a);
   const double fstar = std::isnan(b) ? NaN : fabs(at_b.force(b));
   const double c = probe->d2(a);
-  const double e2a = probe->energy(2.0 * a);
+  // a pair style computes nothing at or beyond its cutoff: Pi(2a) = 0 there
+  const double e2a = 2.0 * a < cut ? probe->energy(2.0 * a) : 0.0;
   // with LAMMPS's unit conversions: acceleration = ftm2v force/mass, kinetic energy =
   // mvv2e m v^2 / 2, a damping force B v of fix viscous is in force units
   const double m = mass_user > 0.0 ? mass_user : atom->mass[itype];

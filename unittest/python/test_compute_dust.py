@@ -1,6 +1,7 @@
 """compute dust: the fragment partition equals compute cluster/atom (random and fractured
 configurations, serial and MPI), constructed scenes with known answers, maxsize, masses,
-groups, dump local, bad input (and the table of hostile input, conftest.InputTable)."""
+groups, dump local, three types bonded at each type pair's cutoff atom by atom against a numpy
+bond graph, bad input (and the table of hostile input, conftest.InputTable)."""
 import numpy as np
 import pytest
 from conftest import (OK, PLUGIN, SCENE_BOX, SCENE_EMPTY, SCENE_LINKED, SCENE_MORSE, SCENE_NOBOX,
@@ -480,3 +481,64 @@ def test_two_types_bond_at_their_own_pair_cutoff(units, scale, first):
             f"pair_coeff 1 1 1.0 6.0 {scale!r}", f"pair_coeff 2 2 1.0 6.0 {2 * scale!r}",
             f"pair_coeff 1 2 1.0 6.0 {1.5 * scale!r}", "compute d all dust", "run 0 post no"])
         assert lmp.numpy.extract_compute("d", 0, 1)[5] == 3      # {1-2 pair}, {1}, {1}
+
+
+@pytest.mark.parametrize("nprocs", [1, 2])
+@pytest.mark.parametrize("units", ["lj", "si"])
+@pytest.mark.parametrize("style", ["morse/spline cut 1.2", "lj/spline wagner"])
+def test_three_types_per_atom_fragments_at_each_type_pairs_cutoff(tmp_path, style, units, nprocs):
+    """Three types with masses m, 1.5 m, 2.5 m in a stretched, shaken block (nearest neighbours
+    at 1.35 a, wagner 1.6 a, +- 0.12 a; the box 4.5 lattice periods + 0.3 a long): every type
+    pair its own a,
+    kappa and cutoff (cut: rc_ij a_ij from 1.17 a to 1.51 a; wagner: its end ac_ij, 1.40 a to 1.62
+    a), so that the bond graph is cut at random and differently per type pair.  Atom by atom
+    (by ID), the fragment ID, size and dust flag of compute dust, and of compute dust maxsize 3,
+    against the components of the bond graph made in numpy at each type pair's distance; the
+    global vector (counts, dust mass, its fraction of the group's) from the same components; on 1
+    and 2 ranks."""
+    from test_pair_spline_types import (PAIRS, RC, UNITS, block, dust_columns, fragments, laws,
+                                        pairs_within)
+    s, _, mass = UNITS[units]
+    base = style.split("/")[0]
+    law = laws(base, units)
+    if "wagner" in style:
+        cut = [law[p].wagner()[1] for p in PAIRS]
+        extra = [""] * 6
+    else:
+        cut = [(RC[k] or 1.2) * law[p].a for k, p in enumerate(PAIRS)]
+        extra = [f" rc {RC[k]}" if RC[k] else "" for k in range(6)]
+    nn = 1.6 if "wagner" in style else 1.35
+    script = [f"plugin load {PLUGIN}", *block(units, noise=0.12, nn=nn), f"pair_style {style}",
+              *[f"pair_coeff {p[0]} {p[1]} {law[p].coeff()}{extra[k]}"
+                for k, p in enumerate(PAIRS)],
+              "compute d all dust", "compute d3 all dust maxsize 3",
+              "thermo_style custom step " + " ".join(f"c_d[{k}] c_d3[{k}]" for k in range(1, 7)),
+              "thermo_modify norm no format float %.17g", "run 0 post no",
+              "write_dump all custom atoms.txt id type x y z c_d[1] c_d[2] c_d[3] c_d3[1] c_d3[2] "
+              "c_d3[3] modify sort id format float %.17g", ""]
+    out = run_lmp(tmp_path, "\n".join(script), nprocs)
+    glob = last_thermo(out, [f"c_{c}[{k}]" for k in range(1, 7) for c in ("d", "d3")])
+    rows = np.loadtxt(tmp_path / "atoms.txt", skiprows=9)
+    lines = (tmp_path / "atoms.txt").read_text().splitlines()
+    box = np.array([float(w[1]) - float(w[0]) for w in (l.split() for l in lines[5:8])])
+    types, x = rows[:, 1].astype(int), rows[:, 2:5]
+    i, j, _, r, k = pairs_within(x, types, box, max(cut))
+    bonded = r < np.array(cut)[k]
+    frag = fragments(len(x), i[bonded], j[bonded])
+    expect = dust_columns(frag)
+    assert np.array_equal(rows[:, 5:8], expect)
+    ids, sizes = np.unique(frag, return_counts=True)
+    assert len(ids) > 15 and sizes.max() > 100    # a cut graph: a body, fragments, single atoms
+    size = expect[:, 1]
+    assert np.array_equal(rows[:, 8:11], np.stack([frag, size, (size <= 3).astype(float)], axis=1))
+    # the global vectors: dust atoms, dust fragments, dust mass, its fraction, body, fragments
+    masses = mass * np.array([0.0, 1.0, 1.5, 2.5])[types]
+    for flags, got in ((expect[:, 2], glob[0::2]), (size <= 3, glob[1::2])):
+        flags = flags.astype(bool)
+        want = [flags.sum(), len(np.unique(frag[flags])), masses[flags].sum(),
+                masses[flags].sum() / masses.sum(), sizes.max(), len(ids)]
+        assert got[:2] == want[:2] and got[4:] == want[4:]
+        assert got[2:4] == pytest.approx(want[2:4], rel=1e-12)
+    # one cutoff for all type pairs (pair 1 1's) would give other fragments
+    one = r < cut[0]
+    assert not np.array_equal(fragments(len(x), i[one], j[one]), frag)

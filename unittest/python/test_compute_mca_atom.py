@@ -2,8 +2,9 @@
 their mean and equivalent stress, linked pairs and element volumes.  Oracles: isotropic Hooke's
 law of the input moduli on a uniformly strained fcc block and LAMMPS's virial pressure (eight
 unit styles); LAMMPS's pxy after a tilt once the elements have turned (two unit styles); the
-group's elements against the whole's; serial against 2 ranks (newton on and off).  Stale values
-are a clear error; the table of hostile input (conftest.InputTable)."""
+group's elements against the whole's; serial against 2 ranks (newton on and off); Love's sum
+with each element's own arm to the contact point in a dimer of two sizes and materials.  Stale
+values are a clear error; the table of hostile input (conftest.InputTable)."""
 import math
 
 import numpy as np
@@ -179,3 +180,48 @@ row("mca-ok", scene_mca(), [MP, MC, "compute s all mca/atom", "compute m all red
 @pytest.mark.parametrize("setup,cmds,expect,isolate", INPUTS.rows)
 def test_hostile_input(setup, cmds, expect, isolate):
     check_input(setup, cmds, expect, isolate)
+
+
+@pytest.mark.parametrize("units", ["lj", "si"])
+def test_two_element_sizes_take_their_own_arm_of_the_link(units):
+    """A linked dimer of two materials and two sizes (R1 = 0.5, R2 = 0.8 units, touching, then
+    stretched by 1e-3): each element's stress is Love's q_i F n / Omega_i with its own arm
+    q_i = r R_i / (R_i + R_j) to the contact point (not r/2, which the sum over both elements
+    does not see: q_1 + q_2 = r), F the force on it (LAMMPS's f), Omega_i its volume (column
+    10, 4/3 pi R_i^3 / F); uniaxial: the mean stress a third of it, the von Mises stress it,
+    one link each."""
+    unit, scale = SCALE[units]
+    r1, r2 = 0.5 * unit, 0.8 * unit
+    fraction, delta = 0.6, 1.0e-3 * unit
+    with session() as lmp:
+        box = 10 * unit
+        lmp.commands_list([
+            f"units {units}", "atom_style sphere", "atom_modify map array", "boundary f f f",
+            "comm_modify vel yes",
+            f"region box block {-box} {box} {-box} {box} {-box} {box} units box",
+            "create_box 2 box", f"create_atoms 1 single {-r1} 0 0 units box",
+            f"create_atoms 2 single {r2} 0 0 units box", f"set type 1 diameter {2 * r1}",
+            f"set type 2 diameter {2 * r2}", "set group all density 1.0",
+            f"neighbor {0.1 * unit} bin", f"pair_style mca fraction {fraction} tolerance 0.01",
+            f"pair_coeff 1 1 bulk {3.0 * scale} shear {1.0 * scale}",
+            f"pair_coeff 2 2 bulk {2.0 * scale} shear {0.4 * scale}", "compute s all mca/atom",
+            "thermo_modify norm no", "run 0", "group two id 2",
+            f"displace_atoms two move {delta} 0 0 units box", "run 0"])
+        f = np.array(lmp.gather_atoms("f", 1, 3)).reshape(-1, 3)
+        x = np.array(lmp.gather_atoms("x", 1, 3)).reshape(-1, 3)
+        s = np.array(lmp.gather("c_s", 1, 10)).reshape(-1, 10)
+    r = x[1, 0] - x[0, 0]
+    radius = np.array([r1, r2])
+    omega = 4 * math.pi / 3 * radius ** 3 / fraction
+    q = r * radius / (r1 + r2)
+    n = np.array([1.0, -1.0])    # from each element to its partner, along x
+    sxx = q * f[:, 0] * n / omega
+    assert np.all(sxx > 0)    # tension
+    assert s[:, 9] == pytest.approx(omega, rel=1e-12)
+    assert s[:, 0] == pytest.approx(sxx, rel=1e-10)
+    assert np.abs(s[:, 1:6]).max() <= 1e-12 * sxx.max()
+    assert s[:, 6] == pytest.approx(sxx / 3, rel=1e-10)
+    assert s[:, 7] == pytest.approx(sxx, rel=1e-10)
+    assert list(s[:, 8]) == [1.0, 1.0]
+    # what the arms change: with r/2 each, element 1's stress would be R2/R1 x its q share off
+    assert abs(0.5 * r * f[0, 0] / omega[0] - sxx[0]) > 1e-2 * sxx[0]

@@ -1,7 +1,8 @@
 """compute pair/params against the spec's closed forms (section 4) on the analytic path
 (this package's styles) and the numeric path (stock styles through single()), the shock
-table against an independent solution of the c(u) equation (section 5), bad input (and the
-table of hostile input, conftest.InputTable)."""
+table against an independent solution of the c(u) equation (section 5; exactly, with Pi'' in
+closed form), each type pair of three types with its own law, cutoff and mass, bad input (and
+the table of hostile input, conftest.InputTable)."""
 import math
 
 import numpy as np
@@ -195,6 +196,55 @@ def test_vd_of_the_law_as_computed_and_of_the_base_law(units, tail):
         assert vec["vd"] == pytest.approx(vec["vd0"], rel=1e-12)
 
 
+@pytest.mark.parametrize("units", ["lj", "si"])
+@pytest.mark.parametrize("itype,jtype", [(1, 2), (2, 1), (2, 3), (3, 2), (3, 3)])
+@pytest.mark.parametrize("path", ["analytic", "numeric"])
+def test_each_type_pair_reads_its_own_law_cutoff_and_mass(path, itype, jtype, units):
+    """Three types (masses m, 1.5 m, 2.5 m), each type pair its own Morse D, alpha, a, kappa and
+    cutoff (test_pair_spline_types: morse/spline cut 1.2 with per-pair rc; numeric path: stock
+    morse with alpha kappa and each pair's cutoff): compute pair/params I J gives the closed forms
+    of pair I,J's law with the mass of type I (omega0, v0, vd, B* differ between I J and J I),
+    and Rc, u_cr and u_cr,1D from that pair's cutoff; exact on the analytic path."""
+    from test_pair_spline_types import CASES, PAIRS, RC, UNITS, laws
+    s, _, mass = UNITS[units]
+    case = CASES[0]
+    lines = case.ours(units) if path == "analytic" else case.stock(units)
+    with session() as lmp:
+        lmp.commands_list([f"units {units}", f"region box block 0 {6 * s!r} 0 {6 * s!r} 0 "
+                           f"{6 * s!r} units box", "create_box 3 box", f"mass 1 {mass!r}",
+                           f"mass 2 {1.5 * mass!r}", f"mass 3 {2.5 * mass!r}",
+                           f"neighbor {0.3 * s!r} bin", *lines,
+                           f"compute p all pair/params {itype} {jtype} lattice fcc",
+                           "thermo_style custom step c_p[1]", "run 0 post no"])
+        values = dict(zip(NAMES, lmp.numpy.extract_compute("p", 0, 1)[:21].copy()))
+    k = PAIRS.index((min(itype, jtype), max(itype, jtype)))
+    law = laws("morse", units)[PAIRS[k]]
+    m = mass * [1.0, 1.5, 2.5][itype - 1]
+    expected = closed_form(law, m)
+    del expected["k2"]    # cut before 2 a: Pi(2a) = 0
+    rc = RC[k] or 1.2
+    v0 = expected["v0"]
+    expected.update(Rc=rc, ucr=1.35 * (rc - 1) * v0, ucr1d=(rc - 1) * v0 / (2 * math.sqrt(2)),
+                    T0=2 * math.pi / expected["omega0"], vl=1.10 * v0,
+                    vd0=math.sqrt(2 * law.D / m))
+    if path == "analytic":
+        check(values, expected, 1e-12, 1e-12)
+        assert values["k2"] == math.inf
+    else:
+        check(values, expected, 1e-7, 1e-5)
+
+
+def test_numeric_k2_of_a_law_cut_before_2a_is_inf():
+    """doc/compute_pair_params.rst: k2 = Pi(a)/Pi(2a) of the law as the pair style computes it,
+    inf when Pi(2a) = 0; stock morse cut at 1.2 a computes 0 at 2 a, as morse/spline cut 1.2
+    (the numeric path read single() at 2 a beyond the cutoff, the uncut law's 202, until
+    28 Nov 2026)."""
+    ours, _ = params("morse/spline cut 1.2", "1.0 6.0 1.0")
+    assert ours["k2"] == math.inf
+    stock, _ = params("morse 1.2", "1.0 6.0 1.0")
+    assert stock["k2"] == math.inf
+
+
 def test_stock_style_vd0_is_its_vd():
     values, _ = params("morse 2.5", "1.0 6.0 1.0", commands=["pair_modify shift yes"])
     assert values["vd0"] == values["vd"]
@@ -229,6 +279,53 @@ def test_shock_table_solves_the_c_of_u_equation(style):
         assert row[4] == pytest.approx(math.pi * law.a / row[3], rel=1e-12)
         assert row[5] == pytest.approx(row[4] / 20, rel=1e-12)
     assert table[1][1] == pytest.approx(0.76, abs=0.005)  # the spec: u = 4 km/s gives y = 0.76
+
+
+def exact_pi2(law, r):
+    """Pi''(r) of the kappa-modified law in closed form."""
+    x = law.s(r)
+    if law.base == "morse":
+        e = math.exp(-law.alpha * (x - law.a))
+        base = 2 * law.alpha ** 2 * law.D * (2 * e * e - e)
+    else:
+        n, m = (12.0, 6.0) if law.base == "lj" else (law.n, law.m)
+        q = law.a / x
+        base = law.D * n * m / ((n - m) * law.a ** 2) * ((n + 1) * q ** (n + 2) -
+                                                         (m + 1) * q ** (m + 2))
+    return law.kappa ** 2 * base
+
+
+@pytest.mark.parametrize("law,mass", [
+    (Law("morse", 2.46e-6, 1e-5, alpha=3.76e5), 2.338e-12),
+    (Law("morse", 1.3, 1.1, alpha=5.0, kappa=1.2), 2.0),
+    (Law("lj", 1.0, 1.0, kappa=0.8), 1.0),
+    (Law("mie", 1.3, 1.0, n=9, m=6, kappa=1.2), 1.5)], ids=["al", "morse-kappa", "lj", "mie"])
+def test_shock_table_is_exact_on_the_analytic_path(law, mass):
+    """The spline styles' analytic Pi'': y of y + (u/c0)/sqrt(Pi''(ya)/Pi''(a)) = 1 solved here
+    by bisection to the last bit with Pi'' in closed form, c(u) = u/(1 - y), T_min = pi a/c(u)
+    and the step T_min/20, to 1e-12 (the finite-difference check above holds 1e-7) at 0.1, 0.5
+    and 1.2 c0."""
+    values, _ = params(f"{law.style()} cut 1.3", law.coeff(), mass=mass)
+    c0 = values["v0"]
+    assert c0 == pytest.approx(law.a * math.sqrt(exact_pi2(law, law.a) / mass), rel=1e-14)
+    speeds = [0.1 * c0, 0.5 * c0, 1.2 * c0]
+    _, table = params(f"{law.style()} cut 1.3", law.coeff(),
+                      "u " + " ".join(repr(u) for u in speeds), mass=mass)
+    c = exact_pi2(law, law.a)
+    for row, u in zip(table, speeds):
+        g = lambda y: y + (u / c0) / math.sqrt(exact_pi2(law, y * law.a) / c) - 1
+        lo, hi = 0.3, 1.0
+        for _ in range(200):
+            mid = 0.5 * (lo + hi)
+            lo, hi = (mid, hi) if g(mid) < 0 else (lo, mid)
+        y = 0.5 * (lo + hi)
+        cu = u / (1 - y)
+        assert row[0] == u
+        assert row[1] == pytest.approx(y, rel=1e-13)
+        assert row[2] == pytest.approx(cu / c0, rel=1e-12)
+        assert row[3] == pytest.approx(cu, rel=1e-12)
+        assert row[4] == pytest.approx(math.pi * law.a / cu, rel=1e-12)
+        assert row[5] == pytest.approx(math.pi * law.a / cu / 20, rel=1e-12)
 
 
 def test_harmonic_shock_table_is_linear():

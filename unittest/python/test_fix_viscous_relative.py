@@ -1,7 +1,9 @@
 """fix viscous/relative against independent oracles: conservation laws, the closed-form
 decay of a pair, pair_style dpd/tstat at zero temperature, fix viscous, the energy
 balance, serial vs MPI, restart, stability, the pairs a pair style with link L holds bonded
-(free flight as the oracle for the others), and bad input (the table of hostile input,
+(free flight as the oracle for the others), the closed-form force atom by atom in an
+accelerating block of three types (each type pair its own cutoff, C and m_ij), a dimer's exact
+velocity-Verlet recurrence in the eight unit styles, and bad input (the table of hostile input,
 conftest.InputTable)."""
 import ctypes
 import math
@@ -918,3 +920,174 @@ row("viscous-mode-twice-empty-box", SCENE_EMPTY, V + "gamma 1.0 mode normal mode
 @pytest.mark.parametrize("setup,cmds,expect,isolate", INPUTS.rows)
 def test_hostile_input(setup, cmds, expect, isolate):
     check_input(setup, cmds, expect, isolate)
+
+
+# ---------------------------------------------------------------- per atom, an accelerating body
+
+def morse_forces(x, types, box, law, cut):
+    """Per-atom forces of the kappa-modified Morse laws (cut tail) of each type pair."""
+    from test_pair_spline_types import PAIRS, morse_np, pairs_within
+    i, j, d, r, k = pairs_within(x, types, box, max(cut.values()))
+    keep = r < np.array([cut[PAIRS[q]] for q in k])
+    i, j, d, r, k = i[keep], j[keep], d[keep], r[keep], k[keep]
+    fpair = np.zeros(len(r))
+    for q, p in enumerate(PAIRS):
+        fpair[k == q] = morse_np(r[k == q], law[p])[1] / r[k == q]
+    f = np.zeros_like(x)
+    np.add.at(f, i, d * fpair[:, None])
+    np.add.at(f, j, -d * fpair[:, None])
+    return f, (i, j, d, r, k)
+
+
+def damping_closed_form(v, masses, pairs, cut, law, options, ftm2v):
+    """doc/fix_viscous_relative.rst: F_i = -F_j = -m_ij G_ij w(r) dv / ftm2v on each pair inside
+    its type pair's cutoff, G_ij = gamma or sqrt(ftm2v C_ij / m_ij) / J, C_ij = 2 (kappa alpha)^2
+    D of the pair's law."""
+    from test_pair_spline_types import PAIRS
+    i, j, d, r, k = pairs
+    words = options.split()
+    mij = 2 * masses[i] * masses[j] / (masses[i] + masses[j])
+    if words[0] == "J":
+        c = np.array([2 * (law[PAIRS[q]].kappa * law[PAIRS[q]].alpha) ** 2 * law[PAIRS[q]].D
+                      for q in k])
+        rate = np.sqrt(ftm2v * c / mij) / float(words[1])
+    else:
+        rate = np.full(len(r), float(words[1]))
+    coef = mij * rate / ftm2v
+    if "dpd" in words:
+        coef = coef * (1 - r / np.array([cut[PAIRS[q]] for q in k])) ** 2
+    dv = v[i] - v[j]
+    if "normal" in words:
+        dv = d * ((dv * d).sum(axis=1) / (r * r))[:, None]
+    fd = np.zeros_like(v)
+    np.add.at(fd, i, -coef[:, None] * dv)
+    np.add.at(fd, j, coef[:, None] * dv)
+    return fd
+
+
+@pytest.mark.parametrize("path", ["own loop", "pair pass"])
+@pytest.mark.parametrize("options", ["J 20", "J 20 mode normal weight dpd", "gamma G mode normal",
+                                     "gamma G weight dpd"])
+@pytest.mark.parametrize("units", ["lj", "si"])
+def test_an_accelerating_three_type_block_is_damped_per_atom_as_the_closed_form(
+        tmp_path, units, options, path):
+    """A hot block of three types (masses m, 1.5 m, 2.5 m) under morse/spline with its own D, a,
+    kappa and rc for each type pair, pulled apart by fix addforce (type 2 along +x, type 3 along
+    -x): the relative velocities grow, unevenly.  At a step with no output the forces, velocities
+    and positions of each atom (dump, 17 digits) give the damping force, f - f_pair - f_push,
+    atom by atom equal to the closed form at the half-step velocities v - (dt/2) ftm2v f / m that
+    the force was computed from, each pair damped inside its own type pair's cutoff with its own
+    m_ij and C_ij; the fix's own loop (thermo every step) and the pair style's pass (thermo only
+    at the ends) alike."""
+    from test_pair_spline_types import CASES, PAIRS, RC, UNITS, block, laws
+    s, e, mass = UNITS[units]
+    dt = 0.002 if units == "lj" else 2e-10
+    gamma = 2.0 if units == "lj" else 1e8
+    options = options.replace("G", repr(gamma))
+    push = 2.0 * e / s
+    case = CASES[0]    # morse/spline cut 1.2, per-pair rc and kappa
+    log = tmp_path / "log.lammps"
+    with session("-log", str(log)) as lmp:
+        lmp.commands_list(block(units) + case.ours(units) + [
+            f"velocity all create {0.3 if units == 'lj' else 1e16} 4712 loop geom",
+            f"variable fx atom {push!r}*((type==2)-(type==3))",
+            "fix push all addforce v_fx 0.0 0.0", "fix nve all nve",
+            f"fix damp all viscous/relative {options}", f"timestep {dt!r}",
+            f"thermo {1 if path == 'own loop' else 1000}",
+            f"dump d all custom 7 {tmp_path / 'atoms.txt'} id type x y z vx vy vz fx fy fz",
+            "dump_modify d sort id format float %.17g", "run 10 post no"])
+        ftm2v = lmp.extract_global("ftm2v")
+        lo, hi = lmp.extract_box()[:2]
+    assert FUSED in log.read_text()    # offered; thermo 1 leaves it untaken (energy each step)
+    text = (tmp_path / "atoms.txt").read_text().split("ITEM: TIMESTEP\n")
+    step7 = [t for t in text if t.startswith("7\n")][0]
+    rows = np.loadtxt(step7.splitlines()[8:])
+    types = rows[:, 1].astype(int)
+    x, v, f = rows[:, 2:5], rows[:, 5:8], rows[:, 8:11]
+    box = np.array(hi) - np.array(lo)
+    masses = mass * np.array([0.0, 1.0, 1.5, 2.5])[types]
+    law = laws("morse", units)
+    cut = {p: (RC[q] or 1.2) * law[p].a for q, p in enumerate(PAIRS)}
+    f_pair, pairs = morse_forces(x, types, box, law, cut)
+    f_push = np.zeros_like(f)
+    f_push[:, 0] = push * ((types == 2).astype(float) - (types == 3))
+    f_damp = f - f_pair - f_push
+    v_half = v - 0.5 * dt * ftm2v * f / masses[:, None]
+    expect = damping_closed_form(v_half, masses, pairs, cut, law, options, ftm2v)
+    scale = np.max(np.abs(expect))
+    assert scale > 1e-3 * np.max(np.abs(f_pair))
+    assert np.max(np.abs(f_damp - expect)) <= 1e-9 * scale, np.max(np.abs(f_damp - expect)) / scale
+    # what the test tells apart: the full-step velocities, or one cutoff for all type pairs
+    wrong_v = damping_closed_form(v, masses, pairs, cut, law, options, ftm2v)
+    assert np.max(np.abs(wrong_v - expect)) > 1e-4 * scale
+    one_cut = {p: cut[(1, 1)] for p in PAIRS}
+    _, pairs_one = morse_forces(x, types, box, law, one_cut)
+    wrong_cut = damping_closed_form(v_half, masses, pairs_one, one_cut, law, options, ftm2v)
+    assert np.max(np.abs(wrong_cut - expect)) > 1e-3 * scale
+
+
+# ---------------------------------------------------------------- the exact Verlet recurrence
+
+EXACT_UNITS = ["lj", "real", "metal", "si", "cgs", "electron", "micro", "nano"]
+
+
+@pytest.mark.parametrize("damping", ["gamma", "J"])
+@pytest.mark.parametrize("units", EXACT_UNITS)
+def test_a_dimer_follows_the_damped_verlet_recurrence_exactly(units, damping):
+    """Two atoms of masses 2 and 3 along x, moving apart and accelerating (gamma: no pair force;
+    J: harmonic/spline, alpha a = 6, D = 1, a = 1, kappa 1.1, its C = 2 (kappa alpha)^2 D).
+    Velocity Verlet with the damping at the half-step velocities (doc/fix_viscous_relative.rst)
+    is a linear recurrence: written out here step by step with LAMMPS's ftm2v, it gives the
+    positions and velocities after 400 steps, and the energy removed as the sum of each half
+    kick's (dt/4) F . (v_before + v_after), to 1e-10 (the units test reads exp(-2 G t) at 2e-3)."""
+    m = np.array([2.0, 3.0])
+    mij = 2 * m[0] * m[1] / (m[0] + m[1])
+    kappa, alpha, depth = 1.1, 6.0, 1.0
+    c = 2 * (kappa * alpha) ** 2 * depth
+    with session() as lmp:
+        lmp.commands_list([f"units {units}", "atom_modify map array", "boundary f f f",
+                           "region box block -4 8 -4 4 -4 4", "create_box 2 box", "mass 1 2.0",
+                           "mass 2 3.0", "neighbor 0.3 bin", "create_atoms 1 single 0 0 0",
+                           "create_atoms 2 single 1.02 0 0"])
+        ftm2v = lmp.extract_global("ftm2v")
+        w0 = math.sqrt(2 * ftm2v * c / mij)    # the pair's angular frequency
+        if damping == "gamma":
+            rate, dt = w0 / 5, 0.02 / w0
+            pair = ["pair_style zero 1.5", "pair_coeff * *"]
+            fix = f"gamma {rate!r}"
+        else:
+            rate, dt = math.sqrt(ftm2v * c / mij) / 5.0, 0.05 / w0
+            pair = ["pair_style harmonic/spline cut 1.4",
+                    f"pair_coeff * * {depth} {alpha} 1.0 kappa {kappa}"]
+            fix = "J 5.0"
+        v0 = np.array([-0.6, 0.9]) * w0 * 0.01    # moving apart; momentum not zero
+        lmp.commands_list(pair + [f"set atom 1 vx {v0[0]!r}", f"set atom 2 vx {v0[1]!r}",
+                                  "fix nve all nve", f"fix d all viscous/relative {fix}",
+                                  f"timestep {dt!r}", "run 400 post no"])
+        x = lmp.numpy.extract_atom("x")[:2, 0].copy()
+        v = lmp.numpy.extract_atom("v")[:2, 0].copy()
+        removed = lmp.numpy.extract_fix("d", 0, 0)
+
+    xs, vs = np.array([0.0, 1.02]), v0.copy()
+
+    def force(x_, v_):
+        fd = -mij * rate * (v_[1] - v_[0]) / ftm2v    # on atom 2
+        fp = -(kappa * alpha) ** 2 * depth * 2 * (x_[1] - x_[0] - 1.0) if damping == "J" else 0.0
+        return np.array([-fd - fp, fd + fp]), np.array([-fd, fd])
+
+    tally = 0.0
+    f, fd = force(xs, vs)
+    for _ in range(400):
+        before = vs.copy()
+        vs = vs + 0.5 * dt * ftm2v * f / m
+        tally -= 0.25 * dt * np.dot(fd, before + vs)    # the second half kick of the last step
+        xs = xs + dt * vs
+        f, fd = force(xs, vs)
+        before = vs.copy()
+        vs = vs + 0.5 * dt * ftm2v * f / m
+        tally -= 0.25 * dt * np.dot(fd, before + vs)
+    assert np.max(np.abs(x - xs)) <= 1e-10 * np.max(np.abs(xs))
+    assert np.max(np.abs(v - vs)) <= 1e-10 * np.max(np.abs(v0))
+    assert removed > 0 and removed == pytest.approx(tally, rel=1e-10)
+    # the relative velocity has moved: 400 steps of damping are visible
+    assert abs(vs[1] - vs[0]) < 0.5 * abs(v0[1] - v0[0])
