@@ -32,21 +32,26 @@ namespace ClusterDyn {
     // negated: partner_copy)
     enum {
       REF = 0, AREA = 1, TAU = 2, DPREV = 5, KAPPA = 8, EPL = 9, SIG = 10, ROT = 11, HG = 14,
-      NVALUES = 15
+      DR = 15, DTAU = 16, EHG = 17, FHG = 18, NVALUES = 19
     };
     // REF: the distance at linking (stress free); AREA: S_ij; TAU: the tangential stress on
     // i (3; effective, undamaged); DPREV: x_j - x_i at the last evaluation (3); KAPPA: the
     // largest effective equivalent stress (damage); EPL: the plastic elongation; SIG: the
     // trial normal stress of this step (plasticity); ROT: the rotation of j relative to i (3),
     // turned with the contact's spin as TAU; HG: the elongation beyond its elements' mean
-    // velocity gradient (the hourglass spring of a shock equation of state).  An unlinked
-    // contact uses TAU and DPREV.
+    // velocity gradient (the hourglass spring of a shock equation of state); DR: this step's
+    // change of the separation r (0 at a setup); DTAU: tau~ . dtau~ / a, dtau~ this step's
+    // trial growth of tau (plasticity); EHG: the work the hourglass spring's force has done on
+    // the pair (its energy); FHG: its pull at the last evaluation.  DR and DTAU hold within a
+    // step: they weigh the plastic work by the trapezoid rule, as the step weighs the forces'
+    // work (mca_linked_pair.h).  An unlinked contact uses TAU and DPREV.
 
     // the pair's doubles as its partner sees them (fix neigh/history's transfer_history): the
     // scalars copied, the vectors negated
     static void partner_copy(const double *source, double *target)
     {
-      for (const int k : {REF, AREA, KAPPA, EPL, SIG, HG}) target[k] = source[k];
+      for (const int k : {REF, AREA, KAPPA, EPL, SIG, HG, DR, DTAU, EHG, FHG})
+        target[k] = source[k];
       for (int k = 0; k < 3; k++) {
         target[TAU + k] = -source[TAU + k];
         target[DPREV + k] = -source[DPREV + k];

@@ -21,8 +21,9 @@ namespace ClusterDyn {
 
   class McaElementStress : protected Pointers {
    public:
-    // xx yy zz xy xz yz, then the linked pairs
-    enum { LINKS = 6, COLUMNS = 7 };
+    // xx yy zz xy xz yz, the linked pairs, then (plasticity's trial pass) the sums of the
+    // linked pairs' weighted normal stresses and of their weights (add_mean)
+    enum { LINKS = 6, MEAN_SUM = 7, MEAN_WEIGHT = 8, COLUMNS = 9 };
 
     McaElementStress(LAMMPS *lmp, McaExchange &exchange) :
         Pointers(lmp), exchange(exchange), rows(nullptr), nmax(0), wanted_flag(false),
@@ -43,6 +44,13 @@ namespace ClusterDyn {
     {
       McaElement::add_love(rows[i], q, sym);
       rows[i][LINKS] += linked;
+    }
+    // a linked pair's normal stress with its weight in the mean its element's pairs return
+    // about (McaPlasticity)
+    void add_mean(int i, double weight, double sigma)
+    {
+      rows[i][MEAN_SUM] += weight * sigma;
+      rows[i][MEAN_WEIGHT] += weight;
     }
     // the sums onto their owners, divided by the volume (energy/volume; in pressure units if
     // asked, and then marked as the stresses of this step's atoms)

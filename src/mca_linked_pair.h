@@ -55,7 +55,12 @@ namespace ClusterDyn {
     }
 
     // the radial return by phi < 1 about the mean stress: sigma and tau move, the plastic
-    // elongation grows; returns the work dissipated (per pair); dv: the pair's volume change
+    // elongation grows; returns the work dissipated (per pair); dv: the pair's volume change.
+    // The work: the energy the return takes from the trial state, less half the return's drop
+    // of force times this step's motion (DR, DTAU: the trapezoid rule of the step's work,
+    // sigma dp summed at the stresses after the returns that open and close the step), which
+    // the velocity-Verlet step, weighing its forces so, does not see; an energy drop without it
+    // counts S a dp dr / 2 too much each step (first order in dt)
     double plastic_return(double &sigma, double phi, double mean, double r, double &dv)
     {
       double *tau = v + C::TAU;
@@ -67,7 +72,8 @@ namespace ClusterDyn {
       const double e_new = e_old - back / a;
       dv = -intact * area * back / a;
       return intact * area *
-          (0.5 * a * (e_old * e_old - e_new * e_new) + 0.5 * (tau2_old - C::dot(tau, tau)) / a);
+          (0.5 * a * (e_old * e_old - e_new * e_new) + 0.5 * (tau2_old - C::dot(tau, tau)) / a -
+           0.5 * (back * v[C::DR] + (1.0 - phi) * v[C::DTAU]));
     }
 
     // the relative rotation of j against i: turned with the contact, then advanced by

@@ -5,6 +5,8 @@
 
 #include "mca_plasticity.h"
 
+#include "mca_element_stress.h"
+
 #include "atom.h"
 #include "error.h"
 #include "fix.h"
@@ -64,7 +66,11 @@ void McaPlasticity::return_map(double *const *stress, const std::vector<McaMater
     const double zz = plane_strain ? m.poisson() * (s[0] + s[1]) : s[2];
     const double mean = (s[0] + s[1] + zz) / 3.0;
     out[i][0] = 1.0;
-    out[i][1] = mean;
+    // the pairs return about their own weighted mean (mca_element_stress.h), not Love's,
+    // which weighs them by their arms
+    out[i][1] = s[McaElementStress::MEAN_WEIGHT] > 0.0
+        ? s[McaElementStress::MEAN_SUM] / s[McaElementStress::MEAN_WEIGHT]
+        : mean;
     if (m.yield == 0.0) continue;
     const double dxx = s[0] - mean, dyy = s[1] - mean, dzz = zz - mean;
     const double sint = sqrt(1.5 * (dxx * dxx + dyy * dyy + dzz * dzz +

@@ -141,7 +141,8 @@ void PairMCA::volumetric_strain(const StatePass &pass)
     manybody.add_elongation(i, j, elong, stiffness[i], stiffness[j], jown);
     if (pressure) {
       eos.add_pair(i, j, p.d, v + C::DPREV, carried / v[C::REF], jown);
-      if (moving) v[C::HG] += r - sqrt(C::dot(v + C::DPREV, v + C::DPREV));    // less: later
+      v[C::DR] = moving ? r - sqrt(C::dot(v + C::DPREV, v + C::DPREV)) : 0.0;
+      v[C::HG] += v[C::DR];    // less the affine part: later
     }
   });
   manybody.finish_strain();
@@ -181,15 +182,32 @@ void PairMCA::plastic_trial(const StatePass &pass)
     if (p.rsq == 0.0) coincident_elements(lmp, i, j);
     p.orient(radius[i], radius[j]);
     const C::Turn turn = p.turn(omega[i], omega[j], dt);
+    // this step's motion of the pair, for the trapezoid rule of the plastic work
+    double tau_before[3];
+    for (int k = 0; k < 3; k++) tau_before[k] = v[C::TAU + k];
+    v[C::DR] = moving ? sqrt(p.rsq) - sqrt(C::dot(v + C::DPREV, v + C::DPREV)) : 0.0;
     v[C::SIG] = trial_stresses(i, j, v, p, moving ? &turn : nullptr);
-    const double s =
-        types.model(atom->type[i], atom->type[j]).response.intact(v[C::KAPPA]) * v[C::AREA];
+    if (moving) turn.apply(tau_before);
+    double dtau[3];
+    for (int k = 0; k < 3; k++) dtau[k] = v[C::TAU + k] - tau_before[k];
+    v[C::DTAU] = moving ? C::dot(v + C::TAU, dtau) / C::series(stiffness[i], stiffness[j]) : 0.0;
+    const double intact = types.model(atom->type[i], atom->type[j]).response.intact(v[C::KAPPA]);
+    const double s = intact * v[C::AREA];
     const double *tau = v + C::TAU;
     double fi[3], sym[6];
     for (int k = 0; k < 3; k++) fi[k] = s * (v[C::SIG] * p.n[k] + tau[k]);
     McaElement::dyad(p.n, fi, sym);
     stress.add(i, p.qi, sym, 0);
-    if (newton || j < nlocal) stress.add(j, p.qj, sym, 0);
+    // the mean each element's pairs return about: their transmitted normal stresses weighted
+    // by S w / ((1 - D) a), w the element's share of the pair's elongation, so that a return
+    // by one phi about it keeps the element's volume theta and does work sum S sigma dp >= 0
+    const double ai = stiffness[i], aj = stiffness[j];
+    const double weight = v[C::AREA] / (intact * C::series(ai, aj) * (ai + aj));
+    stress.add_mean(i, weight * aj, intact * v[C::SIG]);
+    if (newton || j < nlocal) {
+      stress.add(j, p.qj, sym, 0);
+      stress.add_mean(j, weight * ai, intact * v[C::SIG]);
+    }
   });
   stress.to_owners(false);
   plasticity.return_map(stress.trial(), types.scaled());
@@ -311,7 +329,8 @@ double PairMCA::pressure_forces(int i, int j, double *v, const McaPairFrame &p, 
   load.stress = eos.pair_stress(i, j);
   double affine;
   if (!spring || !eos.affine_elongation(i, j, p.n, p.r, affine)) {
-    v[C::HG] = 0.0;    // a linear-law element, or neither has a volume: no spring
+    // a linear-law element, or neither has a volume: no spring
+    v[C::HG] = v[C::EHG] = v[C::FHG] = 0.0;
     return 0.0;
   }
   if (elements_turn()) v[C::HG] -= affine;
@@ -321,7 +340,12 @@ double PairMCA::pressure_forces(int i, int j, double *v, const McaPairFrame &p, 
   if (bi + bj == 0.0) return 0.0;
   const double b = C::series(bi, bj), pull = v[C::AREA] * b * v[C::HG];
   for (int k = 0; k < 3; k++) force[k] += pull * p.n[k];
-  return 0.5 * pull * v[C::HG];
+  // its energy is the work its pull has done on the pair (trapezoid rule over the step, as the
+  // step weighs the forces): the spring grows with the pair's motion less the elements' affine
+  // part and stiffens with the pressure, so S b e^2 / 2 is not conserved by its own force
+  if (elements_turn()) v[C::EHG] += 0.5 * (v[C::FHG] + pull) * v[C::DR];
+  v[C::FHG] = pull;
+  return v[C::EHG];
 }
 
 // a setup re-evaluates the same positions; a minimizer does not turn the elements

@@ -45,7 +45,7 @@ boundary p p p
 lattice sc {a}
 region box block -2 14 0 4 0 4
 create_box 1 box
-region body block 0 9.9 INF INF INF INF
+region body block 1 10.9 INF INF INF INF
 create_atoms 1 region body
 create_atoms 1 single 12 1 1
 mass 1 {m}
@@ -67,9 +67,10 @@ run 0
 
 @pytest.mark.parametrize("units", ["lj", "si"])
 def test_velocity_ramp_closed_form(units):
-    """A 10 x 4 x 4 sc block with vx = k x and one lone atom beyond its rear (dust): the rear
-    face (depth 1.5 a: the last two planes, x = 8a and 9a) moves at k 8.5 a, the front face
-    (x = 0 and a) at k 0.5 a, the face along y at 0 (vx only); 32 atoms each."""
+    """A 10 x 4 x 4 sc block from x = a with vx = k x and one lone atom beyond its rear
+    (dust): the rear face (depth 1.5 a: the last two planes, x = 9a and 10a) stands at 10 a
+    and moves at k 9.5 a, the front face (x = a and 2a) stands at a (not at 0, where its sign
+    would not show) and moves at k 1.5 a, the face along y at 0 (vx only); 32 atoms each."""
     a, m, D = (1.0, 1.0, 1.0) if units == "lj" else (1e-5, 2.338e-12, 2.46e-6)
     k = 0.01 if units == "lj" else 1.0e7
     with session() as lmp:
@@ -78,8 +79,8 @@ def test_velocity_ramp_closed_form(units):
         face = [lmp.extract_compute("face", 0, 1)[i] for i in range(3)]
         front = [lmp.extract_compute("front", 0, 1)[i] for i in range(3)]
         side = [lmp.extract_compute("side", 0, 1)[i] for i in range(3)]
-    assert face == pytest.approx([k * 8.5 * a, 9 * a, 32], rel=1e-12)
-    assert front == pytest.approx([k * 0.5 * a, 0.0, 32], rel=1e-12, abs=1e-12 * a)
+    assert face == pytest.approx([k * 9.5 * a, 10 * a, 32], rel=1e-12)
+    assert front == pytest.approx([k * 1.5 * a, a, 32], rel=1e-12)
     assert side[0] == 0.0 and side[2] == 80    # the planes y = 2a and 3a: 10 x 2 x 4 atoms
 
 
@@ -87,9 +88,9 @@ def test_velocity_ramp_closed_form(units):
 @pytest.mark.parametrize("units", ["lj", "si"])
 def test_the_face_velocity_is_mass_weighted(units, masses):
     """The velocity ramp vx = k x with three masses (m, 1.5 m and 2.5 m, types at random, or the
-    same per atom through atom_style sphere's masses): the face layer (the planes x = 8a and 9a,
+    same per atom through atom_style sphere's masses): the face layer (the planes x = 9a and 10a,
     32 atoms) moves at the mass-weighted mean sum(m vx) / sum(m) of its atoms, computed here
-    from the atoms (not the plain mean k 8.5 a that equal masses give)."""
+    from the atoms (not the plain mean k 9.5 a that equal masses give)."""
     a, m, D = (1.0, 1.0, 1.0) if units == "lj" else (1e-5, 2.338e-12, 2.46e-6)
     k = 0.01 if units == "lj" else 1.0e7
     script = RAMP.format(units=units, a=a, m=m, D=D, alpha=3.76 / a, skin=0.2 * a, k=k,
@@ -108,11 +109,11 @@ def test_the_face_velocity_is_mass_weighted(units, masses):
         vx = np.array(lmp.gather_atoms("v", 1, 3)).reshape(-1, 3)[:, 0]
         t = np.array(lmp.gather_atoms("type", 0, 1))
     mass = m * np.array([0.0, 1.0, 1.5, 2.5])[t]
-    layer = (x[:, 0] > 7.5 * a) & (x[:, 0] < 10 * a)
+    layer = (x[:, 0] > 8.5 * a) & (x[:, 0] < 11 * a)
     assert layer.sum() == 32 and len(set(t[layer])) == 3
     want = np.sum(mass[layer] * vx[layer]) / np.sum(mass[layer])
-    assert abs(want - k * 8.5 * a) > 1e-3 * k * a    # the weights matter here
-    assert face == pytest.approx([want, 9 * a, 32], rel=1e-12)
+    assert abs(want - k * 9.5 * a) > 1e-3 * k * a    # the weights matter here
+    assert face == pytest.approx([want, 10 * a, 32], rel=1e-12)
 
 
 def thermo_row(out):

@@ -183,7 +183,10 @@ def test_energy_conservation_dt2():
     assert_falls_as_dt2(energy_error_spread(script))
 
 
-# hot enough that links yield, break and rub (pvector: broken links, plastic and friction work)
+# hot enough that links yield, break and rub (pvector: broken links, plastic and friction work);
+# 3e-3 ran away (energy 12 times the initial by step 800, a known defect: see
+# test_yield_with_strength_keeps_its_budget) and now stops near step 200 with links beyond the list
+HOT_TEMP = 1.5e-3
 HOT = "compute pw all pair mca\nthermo 100\nthermo_style custom step pe c_pw[1] c_pw[5] c_pw[6]\n"
 DUMP = ("write_dump all custom final.txt id xu yu zu omegaz modify sort id "
         "format float %.17g\n")
@@ -196,9 +199,9 @@ def test_two_ranks_give_the_serial_run(tmp_path, newton):
     ref, par = tmp_path / "ref", tmp_path / "par"
     ref.mkdir()
     par.mkdir()
-    out = run_lmp(ref, BLOCK_2D.format(plugin=PLUGIN, newton="on", dt=0.02, temp=3.0e-3) + HOT +
+    out = run_lmp(ref, BLOCK_2D.format(plugin=PLUGIN, newton="on", dt=0.02, temp=HOT_TEMP) + HOT +
                   "run 800\n" + DUMP)
-    run_lmp(par, BLOCK_2D.format(plugin=PLUGIN, newton=newton, dt=0.02, temp=3.0e-3) + HOT +
+    run_lmp(par, BLOCK_2D.format(plugin=PLUGIN, newton=newton, dt=0.02, temp=HOT_TEMP) + HOT +
             "run 800\n" + DUMP, nprocs=2)
     broken, plastic, friction = thermo_rows(out)[-1][2:]
     assert broken > 1 and plastic > 0.0 and friction > 0.0
@@ -208,10 +211,26 @@ def test_two_ranks_give_the_serial_run(tmp_path, newton):
     assert np.abs(a[:, 4] - b[:, 4]).max() <= 1e-10 * np.abs(a[:, 4]).max()
 
 
+@pytest.mark.xfail(strict=True, raises=AssertionError, reason="known defect (doc/pair_mca.rst, "
+                   "Restrictions): in 2d, links that yield and break feed energy in")
+def test_yield_with_strength_keeps_its_budget(tmp_path):
+    """The hot 2d block with yield 0.004 E and strength 0.006 E: kinetic + rotational + pe +
+    the pair's columns 3 to 6 should stay at the initial energy (5 %).  Measured: +55 % by
+    step 400 and four times the initial energy by step 800 (the return about Love's mean did
+    the same, +180 % by step 400); with yield alone, or strength alone, or strength and
+    friction, the budget holds within 2 % (measured at twice this temperature)."""
+    out = run_lmp(tmp_path, BLOCK_2D.format(plugin=PLUGIN, newton="on", dt=0.02, temp=HOT_TEMP)
+                  + "compute pw all pair mca\nthermo 100\nthermo_style custom step ke c_rot pe "
+                  "c_pw[3] c_pw[4] c_pw[5] c_pw[6]\nthermo_modify norm no\nrun 400\n")
+    rows = thermo_rows(out)
+    total = rows[:, 1:].sum(axis=1)
+    assert np.abs(total - total[0]).max() < 0.05 * total[0], total
+
+
 def test_restart_continues_bit_identically(tmp_path):
     """write_restart after 400 steps, read_restart, 400 more: the same bits as one session
     (the plane and every pair's state travel)."""
-    head = BLOCK_2D.format(plugin=PLUGIN, newton="on", dt=0.02, temp=3.0e-3)
+    head = BLOCK_2D.format(plugin=PLUGIN, newton="on", dt=0.02, temp=HOT_TEMP)
     run_lmp(tmp_path, head + "run 400\nrun 400\n" + DUMP, name="in.straight")
     straight = positions(tmp_path)
     run_lmp(tmp_path, head + "run 400\nwrite_restart half.rst\n", name="in.first")

@@ -2,8 +2,8 @@
 laws: the work done on the sample (none in a free impact) = kinetic (with rotation) + pe + the
 pair's columns 3, 4 and 6, and column 5 (plastic work) only for the linear law: the shock law
 puts the plastic work into pe as the elements' heat.  The scene is test_mca_shock.py's impact
-of aluminium at 500 m/s with its yield stress, at a quarter of the default step (the radial
-return drifts by O(dt))."""
+of aluminium at 500 m/s with its yield stress, at a quarter of the default step; each budget
+closes within 0.2 % (measured 0.022 % for the shock law, 0.073 % for the linear law)."""
 import numpy as np
 import pytest
 
@@ -33,7 +33,7 @@ def test_the_shock_law_budget_leaves_the_plastic_work_out(tmp_path, units):
     e0 = rows[0, 5]
     plastic = rows[-1, 4]
     assert plastic > 0.05 * e0                              # it yields, a lot
-    assert np.abs(rows[:, 5] - e0).max() < 0.01 * e0        # closed without column 5
+    assert np.abs(rows[:, 5] - e0).max() < 0.002 * e0       # closed without column 5
     assert abs(rows[-1, 5] + plastic - e0) > 0.04 * e0      # and open with it
 
 
@@ -42,5 +42,5 @@ def test_the_linear_law_budget_takes_the_plastic_work(tmp_path):
     e0 = rows[0, 5]
     plastic = rows[:, 4]
     assert plastic[-1] > 0.05 * e0
-    assert np.abs(rows[:, 5] + plastic - e0).max() < 0.01 * e0
+    assert np.abs(rows[:, 5] + plastic - e0).max() < 0.002 * e0
     assert np.abs(rows[:, 5] - e0).max() > 0.04 * e0

@@ -249,16 +249,13 @@ thermo_modify norm no
 """
 
 
-@pytest.mark.xfail(strict=True, raises=AssertionError, reason="known defect (doc/pair_mca.rst, "
-                   "Restrictions): the return about Love's mean stress can feed energy in at a "
-                   "low yield stress")
 @pytest.mark.parametrize("units", ["lj", "si"])
 def test_hot_block_yielding_at_random_keeps_its_energy_budget(units):
-    """The hot block at yield 0.01 E over 10 time units (d sqrt(rho / E)): the plastic work
-    should never fall, and kinetic + potential + plastic work should stay at the initial energy
-    within 10 % of the work, falling with dt.  Today the plastic work falls (negative
-    dissipation) and the potential energy runs away (or the run stops with links left beyond the
-    list): a strict xfail until the return keeps each element's volume (doc/pair_mca.rst)."""
+    """The hot block at yield 0.01 E over 10 time units (d sqrt(rho / E)): 96 % of its energy
+    flows into plastic work, which never falls, and kinetic + potential + plastic work stays at
+    the initial energy within 1 % of the work (measured 0.20 % at dt 0.02, 0.10 % at 0.01: first
+    order).  Before the return about the pairs' own weighted mean and the trapezoid rule of the
+    plastic work (28 Nov 2026) the plastic work fell to -3.7e3 and the run stopped."""
     errors = []
     for dt in (0.02, 0.01):
         with session() as lmp:
@@ -272,11 +269,29 @@ def test_hot_block_yielding_at_random_keeps_its_energy_budget(units):
                 lmp.command(f"run {round(0.2 / dt)} pre no post no")
                 works.append(tally(lmp)[4])
             e1 = lmp.extract_variable("etot")
-        assert works[-1] > 0.5 * e0                       # most of the energy flowed away
+        assert works[-1] > 0.9 * e0                       # most of the energy flowed away
         assert np.all(np.diff(works) >= 0.0), works
         errors.append(abs(e1 - e0) / works[-1])
-    assert errors[0] < 0.1, errors
+    assert errors[0] < 0.01, errors
     assert errors[1] < 0.7 * errors[0], errors
+
+
+@pytest.mark.parametrize("units", ["lj", "si"])
+def test_plastic_work_never_falls_from_one_step_to_the_next(units):
+    """The hot block at yield 0.01 E, step by step over its first 200 steps (where the flow
+    starts, in tension and in compression at once): the pair's plastic-work column never falls
+    (each pair's return does work S sigma dp >= 0 about its elements' weighted mean)."""
+    with session() as lmp:
+        lmp.commands_list(HOT_BLOCK.format(response="yield $(0.01*v_E)", dt=0.02,
+                                           **BLOCK_UNITS[units]).strip().splitlines())
+        lmp.command("run 0")
+        works = []
+        for _ in range(200):
+            lmp.command("run 1 pre no post no")
+            works.append(tally(lmp)[4])
+    works = np.array(works)
+    assert works[-1] > 0.0
+    assert np.diff(works).min() >= 0.0, np.diff(works).min()
 
 
 def locked_lateral(ex, elastic):

@@ -186,17 +186,21 @@ def impact_script(units="si", v=500.0, extra="", dt_share=1.0, elastic=False):
 
 @pytest.mark.parametrize("units,elastic", [("si", True), ("si", False), ("metal", False)])
 def test_an_impact_without_fracture_keeps_its_energy(tmp_path, units, elastic):
-    # elastic: 0.5 % at the default step (0.1 d / c_L; the hourglass spring's work); yielding,
-    # the radial return drifts by O(dt): 2.0 % at 0.1 d / c_L, 1.1 % at 0.05, so a quarter of
-    # it (doc/pair_mca.rst)
-    share = 1.0 if elastic else 0.25
-    out = run_lmp(tmp_path, impact_script(units, dt_share=share, elastic=elastic)
-                  + f"thermo {int(100 / share)}\nrun {int(1200 / share)}\n")
-    rows = thermo_rows(out)
-    e0 = rows[0, 4]
-    assert rows[0, 1] == pytest.approx(e0)             # all kinetic at the start
-    assert rows[:, 2].max() > 0.3 * e0                 # and much of it went into the elements
-    assert np.abs(rows[:, 4] - e0).max() < 0.01 * e0
+    """Kinetic + rotational + pe (with the elements' heat) at the default step 0.1 d / c_L
+    within 0.3 % of the impact's energy, and closer at half the step.  Measured: yielding
+    0.070 % (0.041 % at half the step), elastic 0.032 % (0.015 %); before the trapezoid rule of
+    the plastic work and the hourglass spring's energy as its work, 2.0 % and 0.53 %."""
+    errors = []
+    for share in (1.0, 0.5):
+        out = run_lmp(tmp_path, impact_script(units, dt_share=share, elastic=elastic)
+                      + f"thermo {int(100 / share)}\nrun {int(1200 / share)}\n")
+        rows = thermo_rows(out)
+        e0 = rows[0, 4]
+        assert rows[0, 1] == pytest.approx(e0)             # all kinetic at the start
+        assert rows[:, 2].max() > 0.3 * e0                 # and much of it went into the elements
+        errors.append(np.abs(rows[:, 4] - e0).max() / e0)
+    assert errors[0] < 0.003, errors
+    assert errors[1] < 0.7 * errors[0], errors
 
 
 def final_state(path, by_place=False):
