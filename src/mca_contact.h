@@ -40,8 +40,8 @@ namespace ClusterDyn {
     // trial normal stress of this step (plasticity); ROT: the rotation of j relative to i (3),
     // turned with the contact's spin as TAU; HG: the elongation beyond its elements' mean
     // velocity gradient (the hourglass spring of a shock equation of state); DR: this step's
-    // change of the separation r (0 at a setup); DTAU: tau~ . dtau~ / a, dtau~ this step's
-    // trial growth of tau (plasticity); EHG: the work the hourglass spring's force has done on
+    // change of the separation r (0 at a setup); DTAU: tau~ . du_t, du_t this step's slide of
+    // the contact points (plasticity); EHG: the work the hourglass spring's force has done on
     // the pair (its energy); FHG: its pull at the last evaluation.  DR and DTAU hold within a
     // step: they weigh the plastic work by the trapezoid rule, as the step weighs the forces'
     // work (mca_linked_pair.h).  An unlinked contact uses TAU and DPREV.
@@ -115,9 +115,10 @@ namespace ClusterDyn {
 
     // the tangential stress after this step's slide: tau and the last separation dprev turn
     // with the contact's spin (null: they do not turn), tau is brought into the tangent plane
-    // of n at its magnitude, then grows by a du_t, du_t the slide of the contact points
+    // of n at its magnitude, then grows by a du_t, du_t the slide of the contact points (into
+    // dut where not null)
     static void slide(double *tau, double *dprev, const double *d, const double *n,
-                      const Turn *turn, double a)
+                      const Turn *turn, double a, double *dut = nullptr)
     {
       if (turn) {
         turn->apply(tau);
@@ -135,6 +136,7 @@ namespace ClusterDyn {
       for (int k = 0; k < 3; k++) {
         tau[k] += a * (du[k] - dun * n[k]);
         dprev[k] = d[k];
+        if (dut) dut[k] = du[k] - dun * n[k];
       }
     }
   };

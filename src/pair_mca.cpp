@@ -183,14 +183,10 @@ void PairMCA::plastic_trial(const StatePass &pass)
     p.orient(radius[i], radius[j]);
     const C::Turn turn = p.turn(omega[i], omega[j], dt);
     // this step's motion of the pair, for the trapezoid rule of the plastic work
-    double tau_before[3];
-    for (int k = 0; k < 3; k++) tau_before[k] = v[C::TAU + k];
     v[C::DR] = moving ? sqrt(p.rsq) - sqrt(C::dot(v + C::DPREV, v + C::DPREV)) : 0.0;
-    v[C::SIG] = trial_stresses(i, j, v, p, moving ? &turn : nullptr);
-    if (moving) turn.apply(tau_before);
-    double dtau[3];
-    for (int k = 0; k < 3; k++) dtau[k] = v[C::TAU + k] - tau_before[k];
-    v[C::DTAU] = moving ? C::dot(v + C::TAU, dtau) / C::series(stiffness[i], stiffness[j]) : 0.0;
+    double dut[3];
+    v[C::SIG] = trial_stresses(i, j, v, p, moving ? &turn : nullptr, dut);
+    v[C::DTAU] = moving ? C::dot(v + C::TAU, dut) : 0.0;
     const double intact = types.model(atom->type[i], atom->type[j]).response.intact(v[C::KAPPA]);
     const double s = intact * v[C::AREA];
     const double *tau = v + C::TAU;
@@ -305,12 +301,13 @@ void PairMCA::pair_forces(const StatePass &pass, StateTally &changes)
 
 // a linked pair's effective normal stress at this step (before any return), returned, and its
 // tangential stress after this step's slide, stored in v (turn: null, the pair does not turn)
-double PairMCA::trial_stresses(int i, int j, double *v, const McaPairFrame &p, const C::Turn *turn)
+double PairMCA::trial_stresses(int i, int j, double *v, const McaPairFrame &p, const C::Turn *turn,
+                               double *dut)
 {
   const double ai = stiffness[i], aj = stiffness[j], a = C::series(ai, aj);
   double sigma = McaLinkedPair::elastic_stress(v, a, p.r);
   if (setting.manybody) sigma += manybody.pair_stress(i, j, ai, aj);
-  C::slide(v + C::TAU, v + C::DPREV, p.d, p.n, turn, a);
+  C::slide(v + C::TAU, v + C::DPREV, p.d, p.n, turn, a, dut);
   return sigma;
 }
 

@@ -101,7 +101,8 @@ namespace ClusterDyn {
     void plastic_trial(const StatePass &);
     void pair_forces(const StatePass &, StateTally &);
     double trial_stresses(int i, int j, double *v, const McaPairFrame &p,
-                          const McaContact::Turn *turn);
+                          const McaContact::Turn *turn,
+                          double *dut = nullptr);
     bool elements_turn() const;
     double pressure_forces(int i, int j, double *v, const McaPairFrame &p, bool spring,
                            McaPressureLoad &load);
