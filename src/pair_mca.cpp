@@ -12,6 +12,7 @@
 
 #include "pair_mca.h"
 
+#include "mca_hourglass_spring.h"
 #include "mca_linked_pair.h"
 #include "mca_pair_walk.h"
 #include "mca_unlinked_pair.h"
@@ -326,23 +327,16 @@ double PairMCA::pressure_forces(int i, int j, double *v, const McaPairFrame &p, 
   load.stress = eos.pair_stress(i, j);
   double affine;
   if (!spring || !eos.affine_elongation(i, j, p.n, p.r, affine)) {
-    // a linear-law element, or neither has a volume: no spring
-    v[C::HG] = v[C::EHG] = v[C::FHG] = 0.0;
+    McaHourglassSpring::clear(v);    // a linear-law element, or neither has a volume
     return 0.0;
   }
   if (elements_turn()) v[C::HG] -= affine;
-  const double squeeze = fabs(load.stress);
-  const double bi = hourglass[i][0] + hourglass[i][1] * squeeze;
-  const double bj = hourglass[j][0] + hourglass[j][1] * squeeze;
-  if (bi + bj == 0.0) return 0.0;
-  const double b = C::series(bi, bj), pull = v[C::AREA] * b * v[C::HG];
+  const double squeeze = fabs(load.stress), bi = hourglass[i][0] + hourglass[i][1] * squeeze,
+               bj = hourglass[j][0] + hourglass[j][1] * squeeze;
+  double energy;
+  const double pull = McaHourglassSpring::pull(v, bi, bj, elements_turn(), energy);
   for (int k = 0; k < 3; k++) force[k] += pull * p.n[k];
-  // its energy is the work its pull has done on the pair (trapezoid rule over the step, as the
-  // step weighs the forces): the spring grows with the pair's motion less the elements' affine
-  // part and stiffens with the pressure, so S b e^2 / 2 is not conserved by its own force
-  if (elements_turn()) v[C::EHG] += 0.5 * (v[C::FHG] + pull) * v[C::DR];
-  v[C::FHG] = pull;
-  return v[C::EHG];
+  return energy;
 }
 
 // a setup re-evaluates the same positions; a minimizer does not turn the elements

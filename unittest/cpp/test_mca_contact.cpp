@@ -110,9 +110,10 @@ TEST(McaContact, SlideAddsTheTangentialPartOnly)
 {
   const double a = 7.0;
   const Vec n = {0.0, 0.0, 1.0}, dprev0 = {0.0, 0.0, 1.0}, d = {0.01, -0.02, 1.03};
-  Vec tau = {0.1, 0.0, 0.0}, dprev = dprev0;
-  McaContact::slide(tau.data(), dprev.data(), d.data(), n.data(), nullptr, a);
+  Vec tau = {0.1, 0.0, 0.0}, dprev = dprev0, dut = {9.0, 9.0, 9.0};
+  McaContact::slide(tau.data(), dprev.data(), d.data(), n.data(), nullptr, a, dut.data());
   expect_vec(tau, {0.1 + a * 0.01, -a * 0.02, 0.0}, 1e-15);
+  expect_vec(dut, {0.01, -0.02, 0.0}, 1e-15);    // the slide it reports: du's tangential part
   // a stress left out of the tangent plane is brought into it at its magnitude
   Vec tilted = {0.3, 0.0, 0.4}, still = d;
   McaContact::slide(tilted.data(), still.data(), d.data(), n.data(), nullptr, a);

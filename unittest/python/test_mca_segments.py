@@ -76,6 +76,23 @@ def row_top(lmp):
     return x[t == 1, 1].max()
 
 
+def top_segment(units):
+    """The top row's height and the x of the third and fourth elements of the row (a segment
+    away from the box's edges)."""
+    r, _ = SCALE[units]
+    with session() as lmp:
+        scene(lmp, units, [])
+        y0 = row_top(lmp)
+        x, _, _, ty = arrays(lmp)
+    xs = np.sort(x[(ty == 1) & (np.abs(x[:, 1] - y0) < 1e-9 * r), 0])
+    return y0, xs[2], xs[3]
+
+
+def at(x, px, py, r):
+    """The index of the element at (px, py)."""
+    return np.where(np.abs(x[:, 0] - px) + np.abs(x[:, 1] - py) < 1e-9 * r)[0][0]
+
+
 @pytest.mark.parametrize("units", ["lj", "si"])
 def test_element_at_the_rest_height_feels_nothing(units):
     """An element sqrt(3) R above a flat row - in a hollow, above a centre or anywhere between -
@@ -101,12 +118,7 @@ def test_pressed_element_normal_force_and_shares(units):
     s, a = stiffness(units)
     delta = 0.02 * r
     t = 0.3
-    with session() as lmp:
-        scene(lmp, units, [])
-        y0 = row_top(lmp)
-        x, _, _, ty = arrays(lmp)
-    xs = np.sort(x[(ty == 1) & (np.abs(x[:, 1] - y0) < 1e-9 * r), 0])
-    xi, xj = xs[2], xs[3]
+    y0, xi, xj = top_segment(units)
     with session() as lmp:
         scene(lmp, units, [(xi + t * (xj - xi), y0 + math.sqrt(3.0) * r - delta)])
         x, f, torque, ty = arrays(lmp)
@@ -114,8 +126,7 @@ def test_pressed_element_normal_force_and_shares(units):
         nktv2p = lmp.extract_global("nktv2p")
     fn = 1.5 * s * a * delta / nktv2p
     k = np.where(ty == 2)[0][0]
-    i = np.where(np.abs(x[:, 0] - xi) + np.abs(x[:, 1] - y0) < 1e-9 * r)[0][0]
-    j = np.where(np.abs(x[:, 0] - xj) + np.abs(x[:, 1] - y0) < 1e-9 * r)[0][0]
+    i, j = at(x, xi, y0, r), at(x, xj, y0, r)
     assert f[k, 1] == pytest.approx(fn, rel=1e-9) and abs(f[k, 0]) < 1e-12 * fn
     assert f[i, 1] == pytest.approx(-(1.0 - t) * fn, rel=1e-9)
     assert f[j, 1] == pytest.approx(-t * fn, rel=1e-9)
@@ -589,20 +600,16 @@ def test_spinning_surface_and_element_load_the_spring_at_their_arms(units):
     """A pressed disc at t = 0.4 of a segment, nothing translating: the row's elements spin at
     w and the disc at -w/2.  One step (no integrator: positions held) slides the contact points
     by V_t dt with V_t = -R_k w_k - (h - R_k) w_s (the segment's point at its arm h - R_k
-    below k's contact point); the spring pulls k with -S a V_t dt along e = (-1, 0), and
-    (less the row's own forces, from the same run without the disc) the segment's ends take -(1 - t) and -t of it with torques -(1 - t)(h - R_k) F_t and
-    -t (h - R_k) F_t (1e-9)."""
+    below k's contact point); the spring pulls k with -S a V_t dt along e = (-1, 0), and (less
+    the row's own forces, from the same run without the disc) the segment's ends take -(1 - t)
+    and -t of it with torques -(1 - t)(h - R_k) F_t and -t (h - R_k) F_t (1e-9)."""
     r, _ = SCALE[units]
     s, a = stiffness(units)
     delta, t = 0.02 * r, 0.4
-    with session() as lmp:
-        scene(lmp, units, [])
-        y0 = row_top(lmp)
-        x, _, _, ty = arrays(lmp)
-    xs = np.sort(x[(ty == 1) & (np.abs(x[:, 1] - y0) < 1e-9 * r), 0])
-    xi, xj = xs[2], xs[3]
+    y0, xi, xj = top_segment(units)
     h = math.sqrt(3.0) * r - delta
-    w, dt = 1.0e-3 / r * (1.0 if units == "lj" else 1.0e4), 0.005 * (1.0 if units == "lj" else 1e-6)
+    w = 1.0e-3 / r * (1.0 if units == "lj" else 1.0e4)
+    dt = 0.005 * (1.0 if units == "lj" else 1e-6)
     runs = []
     for disc in (False, True):    # the row's own spinning pairs: the run without the disc
         with session() as lmp:
@@ -623,8 +630,7 @@ def test_spinning_surface_and_element_load_the_spring_at_their_arms(units):
     vt = -r * (-0.5 * w) - (h - r) * w
     ft = -s * a / nktv2p * vt * dt    # along e = (-1, 0)
     k = np.where(ty == 2)[0][0]
-    i = np.where(np.abs(x[:, 0] - xi) + np.abs(x[:, 1] - y0) < 1e-9 * r)[0][0]
-    j = np.where(np.abs(x[:, 0] - xj) + np.abs(x[:, 1] - y0) < 1e-9 * r)[0][0]
+    i, j = at(x, xi, y0, r), at(x, xj, y0, r)
     assert f[k, 0] == pytest.approx(-ft, rel=1e-9)
     assert f[i, 0] == pytest.approx((1.0 - t) * ft, rel=1e-9)
     assert f[j, 0] == pytest.approx(t * ft, rel=1e-9)
