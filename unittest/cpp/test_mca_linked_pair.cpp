@@ -32,6 +32,25 @@ McaPairFrame frame_along_x(double r)
   return p;
 }
 
+// a link along x at separation r returned by phi about mean: its effective stresses before
+// and after, the work and volume change the return reports, its effective energies before and
+// after
+struct Returned {
+  double sigma0, sigma, work, dv = 0.0, e_before, e_after;
+  Returned(McaLinkedPair &law, double a, double r, double phi, double mean)
+  {
+    const double n[3] = {1.0, 0.0, 0.0};
+    double moment[3];
+    auto energy = [&]() {
+      return law.energy(n, law.elongation(r), C::dot(law.v + C::TAU, law.v + C::TAU), moment);
+    };
+    e_before = energy();
+    sigma0 = sigma = McaLinkedPair::elastic_stress(law.v, a, r);
+    work = law.plastic_return(sigma, phi, mean, r, dv);
+    e_after = energy();
+  }
+};
+
 }    // namespace
 
 TEST(McaLinkedPair, ForceIsMinusTheEnergysSlope)
@@ -57,21 +76,40 @@ TEST(McaLinkedPair, PlasticReturnScalesTheDeviatorAndDissipatesTheEnergyLost)
   Link link(1.0, 0.5);
   link.v[C::TAU + 1] = 0.01;
   McaLinkedPair law(elastic, link.v, a);
-  const double n[3] = {1.0, 0.0, 0.0};
-  double moment[3];
-  auto energy = [&]() {
-    return law.energy(n, law.elongation(r), C::dot(link.v + C::TAU, link.v + C::TAU), moment);
-  };
-  const double e_before = energy();
-  double sigma = McaLinkedPair::elastic_stress(link.v, a, r), dv = 0.0;
-  const double sigma0 = sigma;
-  const double work = law.plastic_return(sigma, phi, mean, r, dv);
-  EXPECT_NEAR(sigma - mean, phi * (sigma0 - mean), 1e-15);    // radial about the mean
+  const Returned got(law, a, r, phi, mean);
+  EXPECT_NEAR(got.sigma - mean, phi * (got.sigma0 - mean), 1e-15);    // radial about the mean
   EXPECT_NEAR(link.v[C::TAU + 1], phi * 0.01, 1e-17);
-  EXPECT_NEAR(link.v[C::EPL], (sigma0 - sigma) / a, 1e-15);    // the elongation that flowed
-  EXPECT_NEAR(sigma, McaLinkedPair::elastic_stress(link.v, a, r), 1e-15);
-  EXPECT_NEAR(work, e_before - energy(), 1e-15);
-  EXPECT_NEAR(dv, -law.area * (sigma0 - sigma) / a, 1e-15);    // the plastic elongation's volume
+  EXPECT_NEAR(link.v[C::EPL], (got.sigma0 - got.sigma) / a, 1e-15);    // the elongation that flowed
+  EXPECT_NEAR(got.sigma, McaLinkedPair::elastic_stress(link.v, a, r), 1e-15);
+  EXPECT_NEAR(got.work, got.e_before - got.e_after, 1e-15);    // no motion in the step
+  EXPECT_NEAR(got.dv, -law.area * (got.sigma0 - got.sigma) / a, 1e-15);    // its volume
+}
+
+TEST(McaLinkedPair, PlasticWorkIsTheTrapezoidRuleOfTheStep)
+{
+  // the pair moved by dr and its contact slid by du_t this step (DR, DTAU = tau~ . du_t): the
+  // work is the energy lost less half the return's drop of force times that motion,
+  // S (1 - D) (d sigma dr + (1 - phi) tau~ . du_t) / 2; for a pair stretched by dr from the
+  // return of the step before at sigma_y to the trial sigma_y + a dr, returned to sigma_y,
+  // that is S sigma_y dr: the yield stress times the plastic elongation
+  const McaResponse elastic;
+  const double a = 2.0, sigma_y = 0.01, dr = 0.002, phi = sigma_y / (sigma_y + a * dr);
+  Link link(1.0, 0.5);
+  link.v[C::EPL] = -sigma_y / a;    // at sigma_y at r = 1, before the step
+  link.v[C::DR] = dr;
+  McaLinkedPair law(elastic, link.v, a);
+  const Returned got(law, a, 1.0 + dr, phi, 0.0);
+  EXPECT_NEAR(got.sigma, sigma_y, 1e-16);
+  EXPECT_NEAR(got.work, 0.5 * sigma_y * dr, 1e-16);
+  EXPECT_NEAR(got.e_before - got.e_after - got.work, 0.5 * 0.5 * a * dr * dr, 1e-16);
+  // the tangential part alike: tau~ grown by a du_t returned by phi gives (1 - phi) tau~ du_t / 2
+  Link slid(1.0, 0.5);
+  slid.v[C::TAU + 1] = 0.03;
+  slid.v[C::DTAU] = 0.03 * 0.004;
+  McaLinkedPair tangential(elastic, slid.v, a);
+  const Returned turned(tangential, a, 1.0, 0.5, 0.0);
+  EXPECT_NEAR(turned.work, turned.e_before - turned.e_after - 0.5 * 0.5 * 0.5 * 0.03 * 0.004,
+              1e-17);
 }
 
 TEST(McaLinkedPair, HoldsDamagesAndBreaksAtTheResponsesStresses)
@@ -167,20 +205,13 @@ TEST(McaLinkedPair, DamagedPairReturnsItsTransmittedStressAboutTheMean)
   const double intact = (1.0 - 0.4 * u * u) / kappa;    // g(kappa) / kappa
   ASSERT_NEAR(law.intact, intact, 1e-15);
   ASSERT_LT(intact, 0.95);
-  const double n[3] = {1.0, 0.0, 0.0};
-  double moment[3];
-  auto energy = [&]() {
-    return law.energy(n, law.elongation(r), C::dot(link.v + C::TAU, link.v + C::TAU), moment);
-  };
-  const double e_before = energy();
-  double sigma = McaLinkedPair::elastic_stress(link.v, a, r), dv = 0.0;
-  const double sigma0 = sigma;    // 1.0: transmitted intact * 1.0, above the mean 0.3
-  const double work = law.plastic_return(sigma, phi, mean, r, dv);
+  const Returned got(law, a, r, phi, mean);    // sigma0 1.0: transmitted intact, above 0.3
+  const double sigma0 = got.sigma0, sigma = got.sigma;
   EXPECT_NEAR(intact * sigma - mean, phi * (intact * sigma0 - mean), 1e-15);
   EXPECT_NEAR(sigma, (mean + phi * (intact * sigma0 - mean)) / intact, 1e-15);
   EXPECT_NEAR(link.v[C::TAU + 2], phi * 0.04, 1e-17);
   EXPECT_NEAR(link.v[C::EPL], (sigma0 - sigma) / a, 1e-15);
   EXPECT_NEAR(sigma, McaLinkedPair::elastic_stress(link.v, a, r), 1e-15);
-  EXPECT_NEAR(work, intact * (e_before - energy()), 1e-15);
-  EXPECT_NEAR(dv, -intact * law.area * (sigma0 - sigma) / a, 1e-15);
+  EXPECT_NEAR(got.work, intact * (got.e_before - got.e_after), 1e-15);
+  EXPECT_NEAR(got.dv, -intact * law.area * (sigma0 - sigma) / a, 1e-15);
 }
