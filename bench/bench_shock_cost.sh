@@ -22,7 +22,7 @@ one() {  # input, lmp args... -> "pair_us loop_us" per particle-step
 median() { sort -g | awk '{v[NR] = $1} END {print (NR % 2) ? v[(NR + 1) / 2] : 0.5 * (v[NR / 2] + v[NR / 2 + 1])}'; }
 : > mca.txt; : > tlsph.txt; : > linear.txt
 for _ in $(seq "$reps"); do
-  one "$examples/mca-shock/in.plate" -var metal al -var v 400 -var records 0 \
+  one "$examples/mca-shock/in.plate" -var metal al -var v 400 -var records 0 -var d 1e-5 \
     -var here "$examples/mca-shock/" >> mca.txt
   one "$examples/mca-shock/in.tlsph" -var metal al -var v 400 -var records 0 -var bodies 1 >> tlsph.txt
   one "$examples/mca-spall/in.plate" -var method mca -var v 400 -var records 0 -var yield 0.29e9 \

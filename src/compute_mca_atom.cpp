@@ -71,6 +71,7 @@ void ComputeMcaAtom::compute_peratom()
                          3.0 * (v[SXY] * v[SXY] + v[SXZ] * v[SXZ] + v[SYZ] * v[SYZ]));
     v[LINKS] = s[i][McaElementStress::LINKS];
     v[VOLUME] = McaElement::volume(atom->radius[i], pair->packing_fraction(), domain->dimension);
+    v[DAMAGE] = pair->element_damage(i);
   }
 }
 

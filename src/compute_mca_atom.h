@@ -2,7 +2,7 @@
    Cluster-dynamics plugin for LAMMPS: compute mca/atom, the state of each
    element of pair_style mca: its stress tensor by Love's formula (tension
    positive, pressure units), mean stress, equivalent (von Mises) stress,
-   linked pairs and volume.
+   linked pairs, volume and damage by spall kinetics.
 ------------------------------------------------------------------------- */
 
 #ifdef COMPUTE_CLASS
@@ -29,7 +29,7 @@ namespace ClusterDyn {
     void compute_peratom() override;
     double memory_usage() override;
 
-    enum { SXX, SYY, SZZ, SXY, SXZ, SYZ, MEAN, EQUIVALENT, LINKS, VOLUME, NCOLUMNS };
+    enum { SXX, SYY, SZZ, SXY, SXZ, SYZ, MEAN, EQUIVALENT, LINKS, VOLUME, DAMAGE, NCOLUMNS };
 
    private:
     PairMCA *pair;

@@ -32,7 +32,7 @@ namespace ClusterDyn {
     // negated: partner_copy)
     enum {
       REF = 0, AREA = 1, TAU = 2, DPREV = 5, KAPPA = 8, EPL = 9, SIG = 10, ROT = 11, HG = 14,
-      DR = 15, DTAU = 16, EHG = 17, FHG = 18, NVALUES = 19
+      DR = 15, DTAU = 16, EHG = 17, FHG = 18, ET = 19, NVALUES = 20
     };
     // REF: the distance at linking (stress free); AREA: S_ij; TAU: the tangential stress on
     // i (3; effective, undamaged); DPREV: x_j - x_i at the last evaluation (3); KAPPA: the
@@ -42,15 +42,18 @@ namespace ClusterDyn {
     // velocity gradient (the hourglass spring of a shock equation of state); DR: this step's
     // change of the separation r (0 at a setup); DTAU: tau~ . du_t, du_t this step's slide of
     // the contact points (plasticity); EHG: the work the hourglass spring's force has done on
-    // the pair (its energy); FHG: its pull at the last evaluation.  DR and DTAU hold within a
-    // step: they weigh the plastic work by the trapezoid rule, as the step weighs the forces'
-    // work (mca_linked_pair.h).  An unlinked contact uses TAU and DPREV.
+    // the pair (its energy); FHG: its pull at the last evaluation; ET: the tangential stress's
+    // energy per area as the work done against it (slide: the trapezoid rule over each step's
+    // motion, as velocity Verlet weighs the force; |tau~|^2 / (2a) where the pair's direction
+    // holds, and second order in dt where it turns, where |tau~|^2 / (2a) is first order).  DR
+    // and DTAU hold within a step: they weigh the plastic work by the trapezoid rule, as the
+    // step weighs the forces' work (mca_linked_pair.h).  An unlinked contact uses TAU and DPREV.
 
     // the pair's doubles as its partner sees them (fix neigh/history's transfer_history): the
     // scalars copied, the vectors negated
     static void partner_copy(const double *source, double *target)
     {
-      for (const int k : {REF, AREA, KAPPA, EPL, SIG, HG, DR, DTAU, EHG, FHG})
+      for (const int k : {REF, AREA, KAPPA, EPL, SIG, HG, DR, DTAU, EHG, FHG, ET})
         target[k] = source[k];
       for (int k = 0; k < 3; k++) {
         target[TAU + k] = -source[TAU + k];
@@ -116,15 +119,17 @@ namespace ClusterDyn {
     // the tangential stress after this step's slide: tau and the last separation dprev turn
     // with the contact's spin (null: they do not turn), tau is brought into the tangent plane
     // of n at its magnitude, then grows by a du_t, du_t the slide of the contact points (into
-    // dut where not null)
+    // dut where not null); work (where not null) gains the work done against the stress over
+    // the motion du = d - dprev, (tau_before + tau_after) . du / 2
     static void slide(double *tau, double *dprev, const double *d, const double *n,
-                      const Turn *turn, double a, double *dut = nullptr)
+                      const Turn *turn, double a, double *dut = nullptr, double *work = nullptr)
     {
       if (turn) {
         turn->apply(tau);
         turn->apply(dprev);
       }
       const double du[3] = {d[0] - dprev[0], d[1] - dprev[1], d[2] - dprev[2]};
+      const double before = work ? dot(tau, du) : 0.0;
       // a stress left out of the new tangent plane (the pair turned otherwise than its
       // contact spins) is brought into it at its magnitude
       const double tau_old2 = dot(tau, tau), taun = dot(tau, n);
@@ -138,6 +143,7 @@ namespace ClusterDyn {
         dprev[k] = d[k];
         if (dut) dut[k] = du[k] - dun * n[k];
       }
+      if (work) *work += 0.5 * (before + dot(tau, du));
     }
   };
 

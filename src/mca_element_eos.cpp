@@ -24,7 +24,8 @@ using namespace ClusterDyn;
 
 McaElementEos::McaElementEos(LAMMPS *lmp, McaExchange &exchange) :
     Pointers(lmp), exchange(exchange), sums(nullptr), pressures(nullptr), heat(nullptr), nmax(0), fraction(1.0),
-    scaled(nullptr), store(nullptr), made(false), dvolume(-1), energy(-1), visc(-1)
+    scaled(nullptr), store(nullptr), made(false), dvolume(-1), energy(-1), visc(-1), damaged(-1),
+    heated(-1)
 {
 }
 
@@ -43,20 +44,26 @@ void McaElementEos::init(const std::vector<McaMaterial> &materials, double packi
   scaled = &materials;
   fraction = packing_fraction;
   laws.clear();
+  kinetics.clear();
   bool any = false;
   for (const McaMaterial &m : materials) any = any || m.shock();
   if (!any) return;
-  for (const McaMaterial &m : materials)
+  for (const McaMaterial &m : materials) {
     laws.push_back(m.shock() ? McaShockEos{m.bulk, m.slope, m.gruneisen, m.b1, m.b2}
                              : McaShockEos{});
+    kinetics.push_back(m.kinetic() ? McaSpallKinetics::of_rate_law(m.spall, m.spall_rate,
+                                                                     m.spall_m, m.bulk)
+                                   : McaSpallKinetics{});
+  }
   store = dynamic_cast<FixPropertyAtom *>(modify->get_fix_by_id(FIX_ID));
   if (!store && made)
-    error->all(FLERR, "Pair mca: fix {} (the elements' volume, internal energy and viscosity of "
-               "their shock equation of state) was removed: re-issue pair_style mca to start "
-               "afresh", FIX_ID);
+    error->all(FLERR, "Pair mca: fix {} (the elements' volume, internal energy, viscosity and "
+               "damage of their shock equation of state) was removed: re-issue pair_style mca "
+               "to start afresh", FIX_ID);
   if (!store)
-    store = dynamic_cast<FixPropertyAtom *>(modify->add_fix(
-        fmt::format("{} all property/atom d_mca_dvolume d_mca_energy d_mca_viscosity", FIX_ID)));
+    store = dynamic_cast<FixPropertyAtom *>(modify->add_fix(fmt::format(
+        "{} all property/atom d_mca_dvolume d_mca_energy d_mca_viscosity d_mca_damage "
+        "d_mca_heat", FIX_ID)));
   made = true;
   // not in data files: read_data would meet the section before the style makes the fix
   // (a data file starts the elements at J = 1, u = 0; restart files keep them)
@@ -65,9 +72,12 @@ void McaElementEos::init(const std::vector<McaMaterial> &materials, double packi
   dvolume = atom->find_custom("mca_dvolume", flag, cols);
   energy = atom->find_custom("mca_energy", flag, cols);
   visc = atom->find_custom("mca_viscosity", flag, cols);
-  if (!store || dvolume < 0 || energy < 0 || visc < 0)
+  damaged = atom->find_custom("mca_damage", flag, cols);
+  heated = atom->find_custom("mca_heat", flag, cols);
+  if (!store || dvolume < 0 || energy < 0 || visc < 0 || damaged < 0 || heated < 0)
     error->all(FLERR, "Pair mca: the elements' equation-of-state state (fix {} property/atom "
-               "d_mca_dvolume d_mca_energy d_mca_viscosity) is missing or taken", FIX_ID);
+               "d_mca_dvolume d_mca_energy d_mca_viscosity d_mca_damage d_mca_heat) is missing "
+               "or taken", FIX_ID);
   check_densities();
 }
 
@@ -171,7 +181,10 @@ double stretch(const double g[3][3])
 // has no shock law or no volume.  A step advances J by exp((tr H' + tr H) / 2) (H' the
 // gradient at the last step's separations, H at this step's); a move between runs, of any size,
 // by det(I + H'), exact for a homogeneous one, and is checked against the pole even where the
-// moved element's links no longer span a volume.
+// moved element's links no longer span a volume.  With spall kinetics a step advances D at the
+// new state's tension, and the energy follows the transmitted pressure at the old and new D
+// (the forces of the two steps).  The old pressure is the one the last step's forces took: before
+// that step's plastic heat (h, added after them), p(J0, u0 - h).
 bool McaElementEos::advance_element(int i, Advance how, double dt)
 {
   const int type = atom->type[i];
@@ -180,6 +193,10 @@ bool McaElementEos::advance_element(int i, Advance how, double dt)
   const double *s = sums[i];
   double &dvol = atom->dvector[dvolume][i], &u = atom->dvector[energy][i];
   double &q = atom->dvector[visc][i];
+  const McaSpallKinetics &spall = kinetics[type];
+  // a type whose material lost its kinetics (pair_coeff) starts afresh at D = 0
+  double &dmg = atom->dvector[damaged][i];
+  if (!spall.active()) dmg = 0.0;
   double inv[6], grad[3][3], last[15], inv0[6], grad0[3][3];
   const bool shaped = McaElementShape::invert(s, inv);
   if (shaped) McaElementShape::gradient(s, inv, grad);
@@ -193,6 +210,7 @@ bool McaElementEos::advance_element(int i, Advance how, double dt)
   }
   if (!shaped) {
     q = 0.0;
+    atom->dvector[heated][i] = 0.0;    // no pressure: the heat is in u alone
     return false;
   }
   double *out = pressures[i];
@@ -208,16 +226,25 @@ bool McaElementEos::advance_element(int i, Advance how, double dt)
     const double j0 = j1;
     j1 = how == MOVED && had_shape ? j0 * stretch(grad0) : j0 * exp(0.5 * (before + now));
     if (!(j1 > law.limit())) beyond_limit(i, j1);
-    const double w0 = 0.5 * (law.pressure(j0, u) + q) * j0 * before;
+    const double p0 = law.pressure(j0, u) - law.gamma * atom->dvector[heated][i];
+    const double w0 = 0.5 * (McaSpallKinetics::transmitted(p0, dmg) + q) * j0 * before;
     if (how == STEP)
       q = force->mvv2e * law.viscosity(-0.5 * (before + now) / dt, m.rho0 / j1, m.c0,
                                         2.0 * atom->radius[i]);
-    u = law.energy_after(u, w0, j1, q, 0.5 * j1 * now);
+    const double u_whole = law.energy_after(u, w0, j1, q, 0.5 * j1 * now);
+    const double tension = -law.pressure(j1, u_whole);
+    if (how == STEP && spall.active()) dmg = spall.advance(dmg, -p0, tension, dt);
+    u = tension > 0.0 && dmg > 0.0
+        ? law.energy_after(u, w0, j1, q, 0.5 * j1 * now, 1.0 - dmg)
+        : u_whole;
     dvol = j1 - 1.0;
   }
-  const double pressure = law.pressure(j1, u) + q, scale = pressure * volume(i) * j1;
+  atom->dvector[heated][i] = 0.0;    // these forces take the heat
+  const double pressure = McaSpallKinetics::transmitted(law.pressure(j1, u), dmg) + q,
+               scale = pressure * volume(i) * j1;
   for (int k = 0; k < 6; k++) out[k] = scale * inv[k];
   out[MEAN] = q - pressure;    // -p
+  out[DAMAGE] = dmg;
   return true;
 }
 
@@ -250,6 +277,11 @@ std::string McaElementEos::lost_links_reason() const
                      least);
 }
 
+double McaElementEos::damage(int i) const
+{
+  return damaged >= 0 ? atom->dvector[damaged][i] : 0.0;
+}
+
 void McaElementEos::begin_heat(int nall)
 {
   for (int i = 0; i < nall; i++) heat[i][0] = 0.0;
@@ -259,7 +291,11 @@ void McaElementEos::finish_heat()
 {
   exchange.to_owners(heat, 1);
   for (int i = 0; i < atom->nlocal; i++)
-    if (laws[atom->type[i]].bulk > 0.0) atom->dvector[energy][i] += heat[i][0] / volume(i);
+    if (laws[atom->type[i]].bulk > 0.0) {
+      const double h = heat[i][0] / volume(i);
+      atom->dvector[energy][i] += h;
+      atom->dvector[heated][i] += h;    // what the next step's old pressure leaves out
+    }
 }
 
 void McaElementEos::tally_energy(double *total, double *per_atom) const

@@ -23,7 +23,13 @@
    element has fewer links.  An element whose
    links span no volume (the smallest eigenvalue of K_i below 0.1 tr K_i / 3:
    a fragment of a few links, a sheet, a chain, whose K_i^-1 would multiply
-   the pressure's force) keeps J_i and u_i and pushes no pair.  J - 1, u and q live in a fix property/atom (migration, restart).
+   the pressure's force) keeps J_i and u_i and pushes no pair.  An element
+   of a material with spall kinetics (mca_spall_kinetics.h) damages under
+   its tension -p: it transmits (1 - D_i) of it (its energy follows the
+   transmitted pressure's work), and at D_i = 1 its links break.  The
+   plastic work heats the elements after the forces of its step: the next
+   step's old pressure leaves that heat out, as those forces did.  J - 1,
+   u, q, D and that heat live in a fix property/atom (migration, restart).
    Formulas: doc/pair_mca.rst.
 ------------------------------------------------------------------------- */
 
@@ -33,6 +39,7 @@
 #include "mca_exchange.h"
 #include "mca_material.h"
 #include "mca_shock_eos.h"
+#include "mca_spall_kinetics.h"
 
 #include "pointers.h"
 
@@ -47,8 +54,9 @@ namespace ClusterDyn {
    public:
     // the columns summed onto owners (K: 6, M = sum w dx x^T: 9, N = sum w dx dx^T: 6; the
     // last step's K' = K - M - M^T + N and M' = M - N) and sent to ghosts (P: 6, the symmetric
-    // part of H: 6, whether the element has a volume: 1, its mean stress -p: 1)
-    enum { MOVES = 15, SUMS = 21, FORWARD = 14, GRADIENT = 6, HAS_VOLUME = 12, MEAN = 13 };
+    // part of H: 6, whether the element has a volume: 1, its mean stress -p: 1, its damage: 1)
+    enum { MOVES = 15, SUMS = 21, FORWARD = 15, GRADIENT = 6, HAS_VOLUME = 12, MEAN = 13,
+           DAMAGE = 14 };
     static constexpr const char *FIX_ID = "PAIR_MCA_EOS";
 
     McaElementEos(LAMMPS *lmp, McaExchange &exchange);
@@ -93,6 +101,17 @@ namespace ClusterDyn {
 
     // whether element i (owned or ghost) has a shock law and links that span a volume
     bool has_volume(int i) const { return pressures[i][HAS_VOLUME] > 0.0; }
+
+    // whether element i or j (owned or ghost, with a volume) is fully damaged by its spall
+    // kinetics: the pair breaks
+    bool spalled(int i, int j) const
+    {
+      return pressures[i][DAMAGE] >= 1.0 || pressures[j][DAMAGE] >= 1.0;
+    }
+    // whether elements of this type fracture by spall kinetics
+    bool kinetic(int type) const { return !kinetics.empty() && kinetics[type].active(); }
+    // the damage of owned element i (0: none or no kinetics)
+    double damage(int i) const;
 
     // the mean stress of the pair's elements that have a volume (0: neither has)
     double pair_stress(int i, int j) const
@@ -148,9 +167,11 @@ namespace ClusterDyn {
     double fraction;
     const std::vector<McaMaterial> *scaled;
     std::vector<McaShockEos> laws;    // per type; bulk 0: no shock law
+    std::vector<McaSpallKinetics> kinetics;    // per type; strength 0: none
     FixPropertyAtom *store;
     bool made;                        // this style made the store
-    int dvolume, energy, visc;        // the store's columns: J - 1, u, q
+    int dvolume, energy, visc, damaged, heated;    // the store's columns: J - 1, u, q, D, and the
+                                                   // heat added after the last step's forces
 
     double volume(int i) const;
     bool advance_element(int i, Advance how, double dt);

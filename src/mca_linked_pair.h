@@ -12,7 +12,8 @@
    stresses (mca_response.h), with the mean stress of the elements'
    pressure (a shock equation of state, mca_element_eos.h), the pair
    damages (from the next step) or breaks (now); with that pressure it
-   also breaks when stretched to RUPTURE r_ref.  Formulas: doc/pair_mca.rst.
+   also breaks when stretched to RUPTURE r_ref, and where an element's spall
+   kinetics has damaged it fully.  Formulas: doc/pair_mca.rst.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_CLUSTERDYN_MCA_LINKED_PAIR_H
@@ -71,6 +72,7 @@ namespace ClusterDyn {
       for (int k = 0; k < 3; k++) tau[k] *= phi;
       const double e_new = e_old - back / a;
       dv = -intact * area * back / a;
+      v[C::ET] -= 0.5 * (tau2_old - C::dot(tau, tau)) / a;    // what the return takes
       return intact * area *
           (0.5 * a * (e_old * e_old - e_new * e_new) + 0.5 * (tau2_old - C::dot(tau, tau)) / a -
            0.5 * (back * v[C::DR] + (1.0 - phi) * v[C::DTAU]));
@@ -89,12 +91,12 @@ namespace ClusterDyn {
     static double elongation(const double *v, double r) { return r - v[C::REF] - v[C::EPL]; }
     double elongation(double r) const { return elongation(v, r); }
 
-    // the effective energy at elongation elong with |tau~|^2 = tau2 (moment: the effective
-    // moment on i)
-    double energy(const double *n, double elong, double tau2, double *moment) const
+    // the effective energy at elongation elong with the tangential energy tangential per area
+    // (ET; |tau~|^2 / (2a) where the pair does not turn) (moment: the effective moment on i)
+    double energy(const double *n, double elong, double tangential, double *moment) const
     {
       const double erot = C::moment(v + C::ROT, n, a, area, planar, moment);
-      return area * (0.5 * a * elong * elong + 0.5 * tau2 / a) + erot;
+      return area * (0.5 * a * elong * elong + tangential) + erot;
     }
 
     // damage and breaking at this step's stresses: HOLDS, the equivalent stress is not above
@@ -132,10 +134,12 @@ namespace ClusterDyn {
       if (turn) rotate(*turn, omega_i, omega_j, dt);
       double moment[3], lost = 0.0;
       const double elong = elongation(p.r), tau2 = C::dot(v + C::TAU, v + C::TAU);
-      const double epair = energy(p.n, elong, tau2, moment);
+      const double epair = energy(p.n, elong, v[C::ET], moment);
       Outcome outcome = respond(sigma + (pressure ? pressure->stress : 0.0), tau2, lost);
-      if (pressure && outcome != BREAKS && response.active() && p.r > RUPTURE * v[C::REF]) {
-        lost = intact;    // a ligament that flowed to the reach of the list
+      if (pressure && outcome != BREAKS &&
+          (pressure->spalled ||
+           ((response.active() || pressure->kinetic) && p.r > RUPTURE * v[C::REF]))) {
+        lost = intact;    // an element spalled, or a ligament flowed to the reach of the list
         outcome = BREAKS;
       }
       if (outcome != HOLDS)

@@ -70,13 +70,15 @@ void McaManybody::tally_changes(StateTally &changes, int damage_work, int plasti
     const double omega = volume(i);
     const double half = 0.5 * ((*scaled)[type[i]].lambda + extra[i]) * omega;
     double now = theta[i][0], e_now = half * now * now;
-    double released[NCHANGES];
-    for (int c = 0; c < NCHANGES; c++) {
+    double released[MOTION];
+    for (int c = 0; c < MOTION; c++) {
       now += dtheta[i][c] / omega;
       const double e = half * now * now;
       released[c] = e_now - e;
       e_now = e;
     }
+    // the lag of the pair stress behind the plastic flow, over the step's motion
+    released[CHANGE_PLASTIC] -= half * dtheta[i][CHANGE_PLASTIC] * dtheta[i][MOTION] / (omega * omega);
     changes.ejump += released[CHANGE_STATE];
     changes.work[damage_work] += released[CHANGE_DAMAGE];
     changes.work[plastic_work] += released[CHANGE_PLASTIC];

@@ -9,7 +9,11 @@
    the element's energy is lambda_i Omega_i theta_i^2 / 2; the changes of
    theta made by this step's breaking and welding (column 0), damage (1)
    and plastic flow (2) release the energy between theta before and after
-   each, in that order.
+   each, in that order.  The pair stress of this step is the theta before
+   the plastic flow: the step's forces lag it by one step, and the plastic
+   work takes the trapezoid rule's share of that lag over the step's motion
+   (column 3, the elongation of the links over the step), -lambda Omega
+   dtheta_p dtheta_motion / 2, so that the budget closes to second order.
    The seam for a volumetric response beyond the linear one (an equation of
    state): pair_stress(), tally_energy() and the release in tally_changes().
    Formulas: doc/pair_mca.rst.
@@ -32,7 +36,7 @@ namespace ClusterDyn {
 
   class McaManybody : protected Pointers {
    public:
-    enum { CHANGE_STATE = 0, CHANGE_DAMAGE = 1, CHANGE_PLASTIC = 2, NCHANGES = 3 };
+    enum { CHANGE_STATE = 0, CHANGE_DAMAGE = 1, CHANGE_PLASTIC = 2, MOTION = 3, NCHANGES = 4 };
 
     McaManybody(LAMMPS *lmp, McaExchange &exchange) :
         Pointers(lmp), exchange(exchange), theta(nullptr), dtheta(nullptr), extra(nullptr), nmax(0),

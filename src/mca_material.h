@@ -9,7 +9,10 @@
    unlinked contacts: dry friction mu, viscous friction eta, welding
    pressure; or, for shocks, a Mie-Grueneisen equation of state on the
    Hugoniot us = c0 + s up in place of the bulk modulus ("shock rho0 c0 s
-   Gamma0", K = rho0 c0^2; mca_shock_eos.h) with its bulk viscosity.
+   Gamma0", K = rho0 c0^2; mca_shock_eos.h) with its bulk viscosity and, in
+   place of the links' strength, the spall kinetics of its elements ("spall
+   S rate m": the spall strength S at the strain rate rate and the exponent
+   m of the rate law; mca_spall_kinetics.h).
    Stresses in pressure units, eta in pressure / velocity, rho0 in the
    mass/volume units that "set density" takes.
 ------------------------------------------------------------------------- */
@@ -49,8 +52,13 @@ namespace ClusterDyn {
     double b1 = 0.06;        // shock: linear bulk viscosity coefficient
     double b2 = 1.2;         // shock: quadratic bulk viscosity coefficient
     double hourglass = 1.0;  // shock: the hourglass spring, in units of 2 (K + 4G/3 + 2|p|) / R
+    double spall = 0.0;      // shock: the spall strength S at the strain rate spall_rate; 0: none
+    double spall_rate = 0.0; // shock: its reference strain rate (1/time)
+    double spall_m = 0.0;    // shock: the exponent of sigma_sp = S (rate / spall_rate)^m
 
-    enum { NRESTART = 16 };
+    enum { NRESTART = 19 };
+
+    bool kinetic() const { return spall > 0.0; }
 
     bool shock() const { return c0 > 0.0; }
 
@@ -71,6 +79,7 @@ namespace ClusterDyn {
           {"weld", weld}};
       for (const auto &kv : more)
         if (kv.second > 0.0) w += fmt::format(" {} {:.17g}", kv.first, kv.second);
+      if (kinetic()) w += fmt::format(" spall {:.17g} {:.17g} {:.17g}", spall, spall_rate, spall_m);
       return w;
     }
 
@@ -78,7 +87,8 @@ namespace ClusterDyn {
     {
       const double v[NRESTART] = {bulk,     shear, strength, damage, yield,     hardening,
                                   friction, viscous, weld,   rho0,   c0,        slope,
-                                  gruneisen, b1,     b2,     hourglass};
+                                  gruneisen, b1,     b2,     hourglass, spall,     spall_rate,
+                                  spall_m};
       fwrite(v, sizeof(double), NRESTART, fp);
     }
 
@@ -104,6 +114,9 @@ namespace ClusterDyn {
       b1 = v[13];
       b2 = v[14];
       hourglass = v[15];
+      spall = v[16];
+      spall_rate = v[17];
+      spall_m = v[18];
       lambda = volumetric_lambda();
     }
 
@@ -124,13 +137,13 @@ namespace ClusterDyn {
     {
       McaMaterial m = *this;
       for (double *v : {&m.bulk, &m.shear, &m.lambda, &m.strength, &m.damage, &m.yield,
-                        &m.hardening, &m.viscous, &m.weld})
+                        &m.hardening, &m.viscous, &m.weld, &m.spall})
         *v *= p2e;
       return m;
     }
 
     // pair_coeff I I bulk K shear G | young E poisson nu | shock rho0 c0 s Gamma0 shear G
-    //   [bulk_viscosity b1 b2] [strength S [damage Sd]] [yield Y [hardening H]]
+    //   [bulk_viscosity b1 b2] [strength S [damage Sd] | spall S rate m] [yield Y [hardening H]]
     //   [friction mu] [viscous eta] [weld P]   (words after I I)
     static McaMaterial read(const std::string &who, int narg, char **arg, LAMMPS *lmp)
     {
@@ -166,6 +179,17 @@ namespace ClusterDyn {
           if (m.gruneisen > 10.0)
             lmp->error->all(FLERR, "{}: shock Gamma0 of {} is not a Grueneisen parameter (0 to "
                             "10)", who, arg[i + 4]);
+        } else if (key == "spall") {
+          m.spall = positive_arg(who, "spall S (spall strength)", arg[i + 1], lmp);
+          m.spall_rate = positive_arg(who, "spall rate (reference strain rate)", arg[i + 2], lmp);
+          m.spall_m = number_arg(who, "spall m (rate exponent)", arg[i + 3], lmp);
+          if (!(m.spall_m >= 0.01 && m.spall_m < 1.0))
+            lmp->error->all(FLERR, "{}: spall m of {} must lie in [0.01, 1): the exponent of "
+                            "sigma_sp = S (rate / rate_ref)^m, 0.1-0.3 for metals", who,
+                            arg[i + 3]);
+          if (!(m.spall_rate >= 1.0e-100 && m.spall_rate <= 1.0e100))
+            lmp->error->all(FLERR, "{}: spall rate of {} is outside 1e-100 to 1e100 (1/time "
+                            "units of the unit style)", who, arg[i + 2]);
         } else if (key == "bulk_viscosity") {
           m.b1 = bounded(who, "bulk_viscosity b1 (linear)", arg[i + 1], 2.0, lmp);
           m.b2 = bounded(who, "bulk_viscosity b2 (quadratic)", arg[i + 2], 4.0, lmp);
@@ -195,11 +219,23 @@ namespace ClusterDyn {
       } else if (viscosity_given || hourglass_given)
         lmp->error->all(FLERR, "{}: {} needs shock (the equation of state it stabilises)", who,
                         viscosity_given ? "bulk_viscosity" : "hourglass");
+      else if (m.kinetic())
+        lmp->error->all(FLERR, "{}: spall needs shock (the kinetics reads the mean stress of "
+                        "the shock equation of state): give strength S to the linear law", who);
+      if (m.kinetic() && m.strength > 0.0)
+        lmp->error->all(FLERR, "{}: give strength S (the links break at a stress) or spall S "
+                        "rate m (the elements' spall kinetics), not both", who);
+      if (m.kinetic() && m.damage > 0.0)
+        lmp->error->all(FLERR, "{}: damage Sd is the links' damage below their strength: it does "
+                        "not go with spall (the elements' own damage)", who);
+      if (m.kinetic() && m.weld > 0.0)
+        lmp->error->all(FLERR, "{}: weld does not go with spall: a spalled element carries no "
+                        "tension, so a weld to it would break at once, every step", who);
       const bool kg = k > 0.0 || g > 0.0, enu = e > 0.0 || nu < 2.0;
       if (kg == enu || (kg && (k < 0.0 || g < 0.0)) || (enu && (e < 0.0 || nu > 1.0)))
         lmp->error->all(FLERR, "{}: give bulk K shear G, or young E poisson nu", who);
       for (const double v : {k, g, e, m.strength, m.damage, m.yield, m.hardening, m.viscous,
-                             m.weld})
+                             m.weld, m.spall})
         if (v > 0.0 && !(v >= 1.0e-100 && v <= 1.0e100))
           lmp->error->all(FLERR, "{}: a value of {} is outside the range 1e-100 to 1e100 that "
                           "the force kernel takes (pressure units of the unit style)", who, v);

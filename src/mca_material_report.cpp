@@ -75,6 +75,14 @@ void McaMaterialReport::print(const McaTypeTable &types, double fraction)
       text += fmt::format(", yield {:.6g}: Hugoniot elastic limit Y (1 - nu)/(1 - 2 nu) = {:.6g}",
                           m.yield, m.yield * (1.0 - nu) / (1.0 - 2.0 * nu));
     text += "\n";
+    if (m.kinetic())
+      text += fmt::format("    spall kinetics: {:.6g} at the strain rate {:.6g} per time unit{}, "
+                          "m {:.4g}: {:.6g} at ten times the rate\n", m.spall, m.spall_rate,
+                          strcmp(style, "lj") == 0
+                              ? std::string()
+                              : fmt::format(" ({:.6g} /s)",
+                                            m.spall_rate * force->femtosecond * 1.0e15),
+                          m.spall_m, m.spall * pow(10.0, m.spall_m));
     if (rho[t] > 0.0) {
       const double cl = sqrt((m.bulk + 4.0 * m.shear / 3.0) / rho[t] * to_speed2);
       const double cs = sqrt(m.shear / rho[t] * to_speed2);

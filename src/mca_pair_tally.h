@@ -29,9 +29,11 @@ namespace ClusterDyn {
   };
 
   // what the elements' pressure does to a linked pair (mca_element_eos.h): its effective force
-  // on i, and the mean stress -p of its elements that its response reads as normal stress
+  // on i, and the mean stress -p of its elements that its response reads as normal stress;
+  // whether an element of it has spall kinetics (kinetic) and is fully damaged (spalled)
   struct McaPressureLoad {
     double f[3], stress;
+    bool kinetic = false, spalled = false;
   };
 
   struct McaPairTally {

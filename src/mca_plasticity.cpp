@@ -25,20 +25,22 @@ void McaPlasticity::init(const std::vector<McaMaterial> &materials, bool in_plan
   for (const McaMaterial &m : materials)
     if (m.yield > 0.0) on = true;
   if (on && !modify->get_fix_by_id(FIX_ID)) {
-    Fix *fix = modify->add_fix(fmt::format("{} all property/atom d_{} ghost yes", FIX_ID, NAME));
+    Fix *fix = modify->add_fix(
+        fmt::format("{} all property/atom d_{} d_{} ghost yes", FIX_ID, NAME, NAME_ZZ));
     // as the pair states, the plastic strain stays out of data files (a plain read_data
     // could not read its section back): elements read from one are fresh
     fix->wd_section = 0;
   }
-  if (on && !strain_array())
-    error->all(FLERR, "Pair mca: fix {} is not the per-element plastic strain (fix "
-               "property/atom d_{}) the style makes: its ID is reserved", FIX_ID, NAME);
+  if (on && (!strain_array() || !column(NAME_ZZ)))
+    error->all(FLERR, "Pair mca: fix {} is not the per-element plastic strains (fix "
+               "property/atom d_{} d_{}) the style makes: its ID is reserved", FIX_ID, NAME,
+               NAME_ZZ);
 }
 
-double *McaPlasticity::strain_array() const
+double *McaPlasticity::column(const char *name) const
 {
   int flag, cols;
-  const int index = atom->find_custom(NAME, flag, cols);
+  const int index = atom->find_custom(name, flag, cols);
   return index < 0 || flag != 1 || cols != 0 ? nullptr : atom->dvector[index];
 }
 
@@ -58,12 +60,12 @@ void McaPlasticity::grow(int nmax_atoms)
 void McaPlasticity::return_map(double *const *stress, const std::vector<McaMaterial> &scaled)
 {
   double *const *out = returned;
-  double *eps_p = strain_array();
+  double *eps_p = strain_array(), *eps_zz = column(NAME_ZZ);
   const int *type = atom->type;
   for (int i = 0; i < atom->nlocal; i++) {
     const double *s = stress[i];
     const McaMaterial &m = scaled[type[i]];
-    const double zz = plane_strain ? m.poisson() * (s[0] + s[1]) : s[2];
+    const double zz = plane_strain ? out_of_plane(i, m, s[0], s[1]) : s[2];
     const double mean = (s[0] + s[1] + zz) / 3.0;
     out[i][0] = 1.0;
     // the pairs return about their own weighted mean (mca_element_stress.h), not Love's,
@@ -79,6 +81,7 @@ void McaPlasticity::return_map(double *const *stress, const std::vector<McaMater
     if (sint <= yield_now) continue;
     const double deps = (sint - yield_now) / (3.0 * m.shear + m.hardening);
     eps_p[i] += deps;
+    if (plane_strain) eps_zz[i] += 1.5 * deps * dzz / sint;
     out[i][0] = (yield_now + m.hardening * deps) / sint;
   }
   exchange.to_ghosts(returned, COLUMNS);

@@ -50,12 +50,14 @@ namespace ClusterDyn {
     }
 
     // the internal energy at J1 from u0: w0 the work done by the old pressure, s1 the volume
-    // change (per reference volume) the new pressure p(J1, u1) + q1 works on
-    double energy_after(double u0, double w0, double j1, double q1, double s1) const
+    // change (per reference volume) the new pressure f p(J1, u1) + q1 works on (f: the share
+    // a damaged element transmits, mca_spall_kinetics.h)
+    double energy_after(double u0, double w0, double j1, double q1, double s1,
+                        double f = 1.0) const
     {
       const double eta = 1.0 - j1;
       const double ph = hugoniot_pressure(eta), uh = hugoniot_energy(eta);
-      return (u0 - w0 - s1 * (ph - gamma * uh + q1)) / (1.0 + gamma * s1);
+      return (u0 - w0 - s1 * (f * (ph - gamma * uh) + q1)) / (1.0 + f * gamma * s1);
     }
 
     // the viscosity at the compression rate D = -(dJ/dt)/J (the linear term only in

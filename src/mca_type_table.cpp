@@ -71,7 +71,7 @@ void McaTypeTable::init(bool plane_stress)
 bool McaTypeTable::responds() const
 {
   for (const McaMaterial &m : material)
-    if (m.strength > 0.0 || m.yield > 0.0 || m.weld > 0.0) return true;
+    if (m.strength > 0.0 || m.kinetic() || m.yield > 0.0 || m.weld > 0.0) return true;
   return false;
 }
 

@@ -41,7 +41,7 @@ namespace ClusterDyn {
     const std::vector<McaMaterial> &as_given() const { return material; }
     bool has_material(int itype) const { return material_set[itype]; }
     const std::vector<McaMaterial> &scaled() const { return in_energy; }
-    // a material breaks, damages, yields or welds
+    // a material breaks (strength or spall kinetics), damages, yields or welds
     bool responds() const;
     bool links(int itype, int jtype) const { return !unlinkable[itype * (ntypes + 1) + jtype]; }
 

@@ -100,6 +100,7 @@ namespace ClusterDyn {
       if (fr.weld > 0.0 && -sigma >= fr.weld && model.links) {
         v[C::REF] = ri_plus_rj;
         v[C::AREA] = area;
+        v[C::ET] = 0.5 * C::dot(tau, tau) / a;    // the tangential stress's energy it keeps
         v[C::KAPPA] = v[C::EPL] = 0.0;
         v[C::ROT] = v[C::ROT + 1] = v[C::ROT + 2] = 0.0;
         word = state_word(kept_word(word, false), 1, trial);

@@ -264,6 +264,8 @@ void PairMCA::pair_forces(const StatePass &pass, StateTally &changes)
       const bool sj = eos.has_law(atom->type[j]) && eos.has_volume(j);
       const double phi = plastic ? plasticity.phi(i, j) : 1.0;
       const double mean = phi < 1.0 && !(si && sj) ? plasticity.mean(i, j) : 0.0;
+      // the links' elongation over the step, for the plastic work's share of the many-body lag
+      if (plastic) tally.volume_change(McaManybody::MOTION, link.intact * v[C::AREA] * v[C::DR]);
       McaPressureLoad load;
       double ehg = 0.0;
       if (si || sj) ehg = pressure_forces(i, j, v, p, si && sj, load);
@@ -308,7 +310,7 @@ double PairMCA::trial_stresses(int i, int j, double *v, const McaPairFrame &p, c
   const double ai = stiffness[i], aj = stiffness[j], a = C::series(ai, aj);
   double sigma = McaLinkedPair::elastic_stress(v, a, p.r);
   if (setting.manybody) sigma += manybody.pair_stress(i, j, ai, aj);
-  C::slide(v + C::TAU, v + C::DPREV, p.d, p.n, turn, a, dut);
+  C::slide(v + C::TAU, v + C::DPREV, p.d, p.n, turn, a, dut, v + C::ET);
   return sigma;
 }
 
@@ -325,6 +327,8 @@ double PairMCA::pressure_forces(int i, int j, double *v, const McaPairFrame &p, 
   double *force = load.f;
   eos.pair_force(i, j, p.d, v[C::AREA] / v[C::REF], force);
   load.stress = eos.pair_stress(i, j);
+  load.kinetic = eos.kinetic(atom->type[i]) || eos.kinetic(atom->type[j]);
+  load.spalled = load.kinetic && eos.spalled(i, j);
   double affine;
   if (!spring || !eos.affine_elongation(i, j, p.n, p.r, affine)) {
     McaHourglassSpring::clear(v);    // a linear-law element, or neither has a volume

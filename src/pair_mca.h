@@ -68,12 +68,17 @@ namespace ClusterDyn {
     void request_element_stress() { stress.request(); }
     double **element_stress() const { return stress.current(); }
     double packing_fraction() const { return setting.fraction; }
-    // 2d: an element's sigma_zz from its in-plane stresses (plane strain: nu (sxx + syy), the
-    // elastic state; plane stress: 0)
+    // the damage D of owned element i by its spall kinetics (0: none)
+    double element_damage(int i) const
+    {
+      return eos.kinetic(atom->type[i]) ? eos.damage(i) : 0.0;
+    }
+    // 2d: an element's sigma_zz from its in-plane stresses (plane strain: nu (sxx + syy) -
+    // E eps_p,zz, no strain along z; plane stress: 0)
     double out_of_plane_stress(int i, double sxx, double syy) const
     {
       if (setting.plane != McaSettings::STRAIN) return 0.0;
-      return types.as_given()[atom->type[i]].poisson() * (sxx + syy);
+      return plasticity.out_of_plane(i, types.as_given()[atom->type[i]], sxx, syy);
     }
 
    private:

@@ -63,6 +63,7 @@ namespace ClusterDyn {
         {"shock", 4, "density velocity", REQUIRED},
         {"strength", 1, "pressure", OPTIONAL},
         {"damage", 1, "pressure", OPTIONAL},
+        {"spall", 3, "pressure 1/time", OPTIONAL},
         {"yield", 1, "pressure", OPTIONAL},
         {"hardening", 1, "pressure", OPTIONAL},
         {"friction", 1, "", OPTIONAL},

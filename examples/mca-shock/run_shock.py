@@ -3,7 +3,9 @@
 potentials/al.shock and cu.shock, read by card()), four ways side by side on the same plates (a
 flyer of 10 fcc cells of 14.14 um on a target of 20, 5 x 5 cells across, elements or particles
 of the same volume):
-  mca    movable cellular automata with the shock equation of state (in.plate);
+  mca    movable cellular automata with the shock equation of state (in.plate, with the
+         links' strength as the fracture, `-var fracture threshold`: the elements' spall
+         kinetics, in.plate's default, is spall_rate.py's);
   tlsph  LAMMPS's smd/tlsph: *EOS_SHOCK, *STRENGTH_LINEAR_PLASTIC and the pairwise-strain
          failure at sigma_sp / (K + 4G/3) (in.tlsph, one body as in.plate, sides held);
   peri   LAMMPS's peri/lps with the metal's K, G, density and critical stretch
@@ -75,7 +77,8 @@ def inputs(method, metal, v):
     """The input script and its -var settings of one plate impact."""
     m = METALS[metal]
     if method == "mca":
-        return os.path.join(HERE, "in.plate"), {"metal": metal, "v": v, "here": HERE + "/"}
+        return os.path.join(HERE, "in.plate"), {"metal": metal, "v": v, "here": HERE + "/",
+                                                "fracture": "threshold", "d": 1.0e-5}
     if method == "tlsph":
         return os.path.join(HERE, "in.tlsph"), {"metal": metal, "v": v, "failure": "pairwise",
                                                 "bodies": 1}

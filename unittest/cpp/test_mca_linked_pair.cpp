@@ -42,7 +42,7 @@ struct Returned {
     const double n[3] = {1.0, 0.0, 0.0};
     double moment[3];
     auto energy = [&]() {
-      return law.energy(n, law.elongation(r), C::dot(law.v + C::TAU, law.v + C::TAU), moment);
+      return law.energy(n, law.elongation(r), law.v[C::ET], moment);
     };
     e_before = energy();
     sigma0 = sigma = McaLinkedPair::elastic_stress(law.v, a, r);
@@ -75,6 +75,7 @@ TEST(McaLinkedPair, PlasticReturnScalesTheDeviatorAndDissipatesTheEnergyLost)
   const double a = 2.0, r = 1.01, phi = 0.6, mean = 0.005;
   Link link(1.0, 0.5);
   link.v[C::TAU + 1] = 0.01;
+  link.v[C::ET] = 0.5 * 0.01 * 0.01 / a;    // its energy |tau~|^2 / (2a)
   McaLinkedPair law(elastic, link.v, a);
   const Returned got(law, a, r, phi, mean);
   EXPECT_NEAR(got.sigma - mean, phi * (got.sigma0 - mean), 1e-15);    // radial about the mean
@@ -105,6 +106,7 @@ TEST(McaLinkedPair, PlasticWorkIsTheTrapezoidRuleOfTheStep)
   // the tangential part alike: tau~ grown by a du_t returned by phi gives (1 - phi) tau~ du_t / 2
   Link slid(1.0, 0.5);
   slid.v[C::TAU + 1] = 0.03;
+  slid.v[C::ET] = 0.5 * 0.03 * 0.03 / a;
   slid.v[C::DTAU] = 0.03 * 0.004;
   McaLinkedPair tangential(elastic, slid.v, a);
   const Returned turned(tangential, a, 1.0, 0.5, 0.0);
@@ -200,6 +202,7 @@ TEST(McaLinkedPair, DamagedPairReturnsItsTransmittedStressAboutTheMean)
   Link link(1.0, 0.5);
   link.v[C::KAPPA] = kappa;
   link.v[C::TAU + 2] = 0.04;
+  link.v[C::ET] = 0.5 * 0.04 * 0.04 / a;
   McaLinkedPair law(response, link.v, a);
   const double u = 1.0 - (kappa - 0.6) / (2.0 * (1.0 - 0.6));
   const double intact = (1.0 - 0.4 * u * u) / kappa;    // g(kappa) / kappa

@@ -90,3 +90,17 @@ TEST(McaShockEos, TheReferenceCurveEndsAtOneMinusOneOverS)
   EXPECT_EQ(flat.limit(), 0.0);
   EXPECT_EQ(flat.hugoniot_pressure(0.5), 0.5);
 }
+
+TEST(McaShockEos, EnergyAfterSolvesForTheTransmittedPressure)
+{
+  // u1 = u0 - w0 - s1 (f p(J1, u1) + q1): the energy of an element that transmits the share f
+  // of its pressure (a damaged element in tension, mca_spall_kinetics.h), for f = 1 and below
+  for (const double f : {1.0, 0.6, 0.0}) {
+    for (const double j1 : {1.03, 0.9}) {
+      const double u0 = 2.0e6, w0 = -1.5e5, q1 = 3.0e5, s1 = 0.5 * (j1 - 1.0);
+      const double u1 = AL.energy_after(u0, w0, j1, q1, s1, f);
+      EXPECT_NEAR(u1, u0 - w0 - s1 * (f * AL.pressure(j1, u1) + q1), 1e-9 * std::fabs(u0))
+          << "f " << f << " J1 " << j1;
+    }
+  }
+}

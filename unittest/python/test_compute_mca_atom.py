@@ -209,7 +209,7 @@ def test_two_element_sizes_take_their_own_arm_of_the_link(units):
             f"displace_atoms two move {delta} 0 0 units box", "run 0"])
         f = np.array(lmp.gather_atoms("f", 1, 3)).reshape(-1, 3)
         x = np.array(lmp.gather_atoms("x", 1, 3)).reshape(-1, 3)
-        s = np.array(lmp.gather("c_s", 1, 10)).reshape(-1, 10)
+        s = np.array(lmp.gather("c_s", 1, 11)).reshape(-1, 11)
     r = x[1, 0] - x[0, 0]
     radius = np.array([r1, r2])
     omega = 4 * math.pi / 3 * radius ** 3 / fraction

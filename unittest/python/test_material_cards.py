@@ -47,8 +47,9 @@ def test_the_five_metals_have_cards():
 @pytest.mark.parametrize("name", NAMES)
 def test_card_is_sane_and_documented(name):
     c = card(name)
-    for key in ("rho", "c0", "s", "gamma", "G", "Y", "spall", "upmax"):
+    for key in ("rho", "c0", "s", "gamma", "G", "Y", "spall", "spall_rate", "spall_m", "upmax"):
         assert c[key] > 0, key
+    assert c["spall_m"] < 1.0
     k, cl, nu, hel = derived(c)
     assert cl > c["c0"]
     assert 0.2 < nu < 0.45

@@ -187,10 +187,15 @@ def impact_script(units="si", v=500.0, extra="", dt_share=1.0, elastic=False):
 @pytest.mark.parametrize("units,elastic", [("si", True), ("si", False), ("metal", False)])
 def test_an_impact_without_fracture_keeps_its_energy(tmp_path, units, elastic):
     """Kinetic + rotational + pe (with the elements' heat) at the default step 0.1 d / c_L
-    within 0.3 % of the impact's energy, and closer at half the step.  Measured: yielding
-    0.070 % (0.041 % at half the step), elastic 0.032 % (0.015 %); before the trapezoid rule of
-    the plastic work and the hourglass spring's energy as its work, 2.0 % and 0.53 %."""
-    errors = []
+    within 0.03 % of the impact's energy, and closer at half the step: elastic as dt^2 (a
+    quarter, within 0.35), yielding at least by 0.7.  Measured: elastic 0.010 % (0.0026 % at
+    half the step), yielding 0.0080 % (0.0051 %: the largest error is the first 100 steps',
+    where the elements first yield, first order; later second order).  Before: 0.032 % and
+    0.069 % (the links' tangential energy |tau|^2 / (2a), the many-body term's lag behind the
+    plastic return and the plastic heat in the next step's old pressure left out); before
+    the trapezoid rule of the plastic work and the hourglass spring's energy as its work, 0.53 %
+    and 2.0 %."""
+    errors, last = [], []
     for share in (1.0, 0.5):
         out = run_lmp(tmp_path, impact_script(units, dt_share=share, elastic=elastic)
                       + f"thermo {int(100 / share)}\nrun {int(1200 / share)}\n")
@@ -199,8 +204,13 @@ def test_an_impact_without_fracture_keeps_its_energy(tmp_path, units, elastic):
         assert rows[0, 1] == pytest.approx(e0)             # all kinetic at the start
         assert rows[:, 2].max() > 0.3 * e0                 # and much of it went into the elements
         errors.append(np.abs(rows[:, 4] - e0).max() / e0)
-    assert errors[0] < 0.003, errors
-    assert errors[1] < 0.7 * errors[0], errors
+        last.append(abs(rows[-1, 4] - e0) / e0)
+    assert errors[0] < 3e-4, errors
+    assert errors[1] < (0.35 if elastic else 0.7) * errors[0], errors
+    # after the elements first yield, second order: the error at the end falls to a third
+    # (measured 5.1e-5 and 1.6e-5 yielding; 1.4e-5 and 1.7e-5 while the next step's old
+    # pressure took the plastic heat its forces had not)
+    assert last[1] < 0.5 * last[0], last
 
 
 def final_state(path, by_place=False):
@@ -249,10 +259,15 @@ def test_two_ranks_and_a_restart_give_the_same_impact(tmp_path):
     ("shock 2703 5350 1.34 2.0 shear 26e9 bulk_viscosity -1 1.2", r"b1"),
 ])
 def test_bad_shock_input_is_refused_naming_it(coeff, message):
+    assert_coeff_refused(coeff, message)
+
+
+def assert_coeff_refused(coeff, message):
+    """pair_coeff 1 1 coeff on plate_setup's box stops with an error matching message."""
     setup = plate_setup("si", 3)
-    setup = [c for c in setup if not c.startswith("pair_coeff")]
+    setup = setup[:setup.index(next(c for c in setup if c.startswith("pair_coeff")))]
     with session() as lmp:
-        lmp.commands_list(setup[:setup.index(next(c for c in setup if c.startswith("set group all density")))])
+        lmp.commands_list(setup)
         with pytest.raises(Exception, match=message):
             lmp.command(f"pair_coeff 1 1 {coeff}")
 
@@ -305,7 +320,7 @@ def test_example_piston_holds_the_work_and_pushes_rho0_us_up(tmp_path, metal, up
 
 
 def test_example_plate_spalls_and_its_free_surface_flies_at_v(tmp_path):
-    out = example(tmp_path, "in.plate", metal="al", v=400, flyer=5, target=10, cells=3)
+    out = example(tmp_path, "in.plate", metal="al", v=400, d=1.0e-5, flyer=5, target=10, cells=3)
     assert re.search(r"large fragments of the target: 2", out)
     t, u = np.loadtxt(tmp_path / "plate.visar", usecols=(1, 2), unpack=True)
     assert u.max() == pytest.approx(400.0, rel=0.05)
