@@ -188,15 +188,16 @@ double stretch(const double g[3][3])
 bool McaElementEos::advance_element(int i, Advance how, double dt)
 {
   const int type = atom->type[i];
+  const McaSpallKinetics &spall = kinetics[type];
+  // a type whose material has (now) no kinetics holds no damage: a pair_coeff that takes it
+  // away, or gives the type the linear law, starts its elements afresh at D = 0
+  double &dmg = atom->dvector[damaged][i];
+  if (!spall.active()) dmg = 0.0;
   if (laws[type].bulk == 0.0) return false;
   const McaShockEos &law = laws[type];
   const double *s = sums[i];
   double &dvol = atom->dvector[dvolume][i], &u = atom->dvector[energy][i];
   double &q = atom->dvector[visc][i];
-  const McaSpallKinetics &spall = kinetics[type];
-  // a type whose material lost its kinetics (pair_coeff) starts afresh at D = 0
-  double &dmg = atom->dvector[damaged][i];
-  if (!spall.active()) dmg = 0.0;
   double inv[6], grad[3][3], last[15], inv0[6], grad0[3][3];
   const bool shaped = McaElementShape::invert(s, inv);
   if (shaped) McaElementShape::gradient(s, inv, grad);

@@ -194,6 +194,7 @@ def test_a_type_that_loses_its_kinetics_starts_afresh(tmp_path):
     with session() as lmp:
         lmp.commands_list(block("si") + [
             "fix 1 all nve/sphere", "compute m all mca/atom",
+            "compute r all reduce sum c_m[11]", "thermo_style custom step c_r",    # invoked
             "fix 2 all deform 1 x erate 1e6 remap x", "run 200 post no"])
         n = lmp.extract_global("nlocal")
         assert lmp.numpy.extract_atom("d_mca_damage")[:n].min() > 0.05
@@ -203,3 +204,54 @@ def test_a_type_that_loses_its_kinetics_starts_afresh(tmp_path):
         lmp.command("run 0 post no")
         assert np.all(lmp.numpy.extract_atom("d_mca_damage")[:n] == 0.0)
         assert np.all(lmp.numpy.extract_compute("m", 1, 2)[:n, 10] == 0.0)
+
+
+def test_the_materials_summary_gives_the_rate_per_second(tmp_path):
+    """The summary pair mca prints at a run's start gives the kinetics' rate in the unit style's
+    1/time and in 1/s (metal: 1e-7 /ps is 1e5 /s) and the strength at ten times the rate,
+    S 10^m, so that a rate typed in the wrong unit shows."""
+    _, _, _, P, _ = UNITS["metal"]
+    out = run_lmp(tmp_path, "\n".join([f"plugin load {PLUGIN}"] + block("metal")
+                                       + ["fix 1 all nve/sphere", "run 0"]) + "\n")
+    line = next(x for x in out.splitlines() if "spall kinetics:" in x)
+    words = re.search(r"spall kinetics: (\S+) at the strain rate (\S+) per time unit \((\S+) /s\), "
+                      r"m (\S+): (\S+) at ten times the rate", line).groups()
+    s, rate, per_second, m, tenfold = (float(w) for w in words)
+    assert s == pytest.approx(S_REF * P, rel=1e-6) and m == M
+    assert rate == pytest.approx(RATE_REF * 1e-12, rel=1e-6)
+    assert per_second == pytest.approx(RATE_REF, rel=1e-6)
+    assert tenfold == pytest.approx(S_REF * P * 10 ** M, rel=1e-5)
+
+
+@pytest.mark.parametrize("kinetic_type", [1, 2])
+def test_links_to_a_spalled_element_break_whatever_the_other_material(kinetic_type):
+    """A third of the block's elements (at random) of a second material, the same shock law
+    without spall: stretched until most kinetic elements are fully damaged, every link of a
+    spalled element breaks, whichever of the pair's two elements the neighbour list takes first
+    (both type numberings); the links among the others hold."""
+    other = 3 - kinetic_type
+    coeff = next(c for c in block("si") if c.startswith("pair_coeff"))
+    plain = coeff.split(" spall")[0]
+    setup = [c.replace("create_box 1 box", "create_box 2 box") for c in block("si")]
+    setup = [c for c in setup if not c.startswith("pair_coeff")]
+    at = setup.index(next(c for c in setup if c.startswith("set group all density")))
+    setup[at:at] = ["set group all type/fraction 2 0.33 12345",
+                    coeff.replace("pair_coeff 1 1", f"pair_coeff {kinetic_type} {kinetic_type}"),
+                    plain.replace("pair_coeff 1 1", f"pair_coeff {other} {other}")]
+    with session() as lmp:
+        lmp.commands_list(setup + [
+            "fix 1 all nve/sphere", "compute m all mca/atom",
+            "compute r all reduce sum c_m[9]", "thermo_style custom step c_r",    # invoked
+            "fix 2 all deform 1 x erate 1e6 remap x", "run 300 post no"])
+        n = lmp.extract_global("nlocal")
+        kind = lmp.numpy.extract_atom("type")[:n].copy()
+        links = lmp.numpy.extract_compute("m", 1, 2)[:n, 8].copy()
+        damage = lmp.numpy.extract_atom("d_mca_damage")[:n].copy()
+    kinetic = kind == kinetic_type
+    spalled = kinetic & (damage == 1.0)
+    assert 20 < (kind == 2).sum() < 60          # a third of 108
+    assert np.all(damage[~kinetic] == 0.0)
+    # most spall; the rest lost their volume when their neighbours did, which stops their damage
+    assert spalled.sum() > 0.5 * kinetic.sum()
+    assert np.all(links[spalled] == 0)
+    assert links[~kinetic].sum() > 0
