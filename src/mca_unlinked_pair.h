@@ -8,7 +8,11 @@
      friction     the elastic tangential stress capped at mu |sigma_n| and
                   eta v_t (mca_friction.h)
      welding      pressed at the weld stress, the pair links where it is
-                  (r_ref = R_i + R_j, its force unchanged) if its types link
+                  (r_ref = its contact distance, its force unchanged) if its types link
+   The contact distance is R_i + R_j, or, for a link that broke, the link's
+   stress-free separation r_ref + e_p (the elements' deformed shapes: a link
+   that flowed in compression and broke does not push its elements apart at
+   once), kept until the pair opens.
    The seam for another contact law (segments, roughness).
    Formulas: doc/pair_mca.rst.
 ------------------------------------------------------------------------- */
@@ -30,14 +34,49 @@ namespace ClusterDyn {
     using C = McaContact;
 
     double area;          // S_u
-    double overlap;       // r - R_i - R_j < 0
+    double overlap;       // r - contact < 0
     double sigma;         // a overlap
-    double ri_plus_rj;    // where a weld links the pair
+    double contact;       // the contact distance, where a weld links the pair
 
-    McaUnlinkedPair(double ri, double rj, double a, double r, int dimension) :
-        area(McaElement::unlinked_area(ri, rj, dimension)), overlap(r - ri - rj), sigma(a * overlap),
-        ri_plus_rj(ri + rj)
+    McaUnlinkedPair(double ri, double rj, double contact, double a, double r, int dimension) :
+        area(McaElement::unlinked_area(ri, rj, dimension)), overlap(r - contact), sigma(a * overlap),
+        contact(contact)
     {
+    }
+
+    // the contact's normal energy S_u a overlap^2 / 2
+    double energy() const { return 0.5 * area * sigma * overlap; }
+
+    // the contact distance of an unlinked pair (word, v: its state)
+    static double contact_distance(int word, const double *v, double ri, double rj)
+    {
+      return (word & WORD_KEPT) && v[C::REF] > 0.0 ? v[C::REF] : ri + rj;
+    }
+
+    // a link that breaks (not at a minimizer's trial point) keeps its stress-free separation as
+    // its contact distance, the rest of its state cleared (a contact starts from no tangential
+    // stress; d: x_j - x_i now); returns the pair's word
+    static int keep_contact(int word, double *v, const double *d)
+    {
+      const double distance = v[C::REF] + v[C::EPL];
+      for (int k = 0; k < C::NVALUES; k++) v[k] = 0.0;
+      v[C::REF] = distance > 0.0 ? distance : 0.0;
+      for (int k = 0; k < 3; k++) v[C::DPREV + k] = d[k];
+      return kept_word(word, true);
+    }
+
+    // an open contact (closer than R_i + R_j, rsq = r^2, d = x_j - x_i) keeps nothing but a broken
+    // link's contact distance, and that while the pair is closer than R_i + R_j (its tangential
+    // stress cleared, d kept for the next slide); returns the pair's word
+    static int open(int word, double *v, double rsq, const double *d, double ri_plus_rj)
+    {
+      if (!(word & WORD_KEPT) || !(v[C::REF] > 0.0) || rsq >= ri_plus_rj * ri_plus_rj)
+        return kept_word(word, false);
+      for (int k = 0; k < 3; k++) {
+        v[C::TAU + k] = 0.0;
+        v[C::DPREV + k] = d[k];
+      }
+      return word;
     }
 
     // the dry part: a new contact starts from no stress; tau slides and is capped (stored in
@@ -96,9 +135,9 @@ namespace ClusterDyn {
         out.ft[k] = area * (tau[k] + visc[k]);
         out.fi[k] = area * sigma * p.n[k] + out.ft[k];
       }
-      if (energy_wanted) out.evdwl = area * (0.5 * a * overlap * overlap + 0.5 * C::dot(tau, tau) / a);
+      if (energy_wanted) out.evdwl = energy() + area * 0.5 * C::dot(tau, tau) / a;
       if (fr.weld > 0.0 && -sigma >= fr.weld && model.links) {
-        v[C::REF] = ri_plus_rj;
+        v[C::REF] = contact;
         v[C::AREA] = area;
         v[C::ET] = 0.5 * C::dot(tau, tau) / a;    // the tangential stress's energy it keeps
         v[C::KAPPA] = v[C::EPL] = 0.0;

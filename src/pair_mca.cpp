@@ -239,8 +239,14 @@ void PairMCA::pair_forces(const StatePass &pass, StateTally &changes)
     McaPairFrame p(atom->x, i, j);
     int &word = pass.words[i][jj];
     const int linked = state_now(word);
-    if (!linked && (p.rsq >= (ri + rj) * (ri + rj) || segments.between(atom->type[i], atom->type[j]))) {
-      word = kept_word(word, false);    // an open contact keeps nothing
+    const double contact =
+        linked ? 0.0 : McaUnlinkedPair::contact_distance(word, pass.pair_values(i, jj), ri, rj);
+    if (!linked && segments.between(atom->type[i], atom->type[j])) {
+      word = kept_word(word, false);
+      return;
+    }
+    if (!linked && p.rsq >= contact * contact) {    // an open contact
+      word = McaUnlinkedPair::open(word, pass.pair_values(i, jj), p.rsq, p.d, ri + rj);
       return;
     }
     if (p.rsq == 0.0) coincident_elements(lmp, i, j);
@@ -271,12 +277,18 @@ void PairMCA::pair_forces(const StatePass &pass, StateTally &changes)
       if (si || sj) ehg = pressure_forces(i, j, v, p, si && sj, load);
       if (!link.step(sigma, phi, mean, p, turning, omega[i], omega[j], dt, tally, eflag_either,
                      si || sj ? &load : nullptr, out)) {
-        word = state_word(word, 0, pass.trial);    // from now on an unlinked pair, apart
+        word = state_word(word, 0, pass.trial);    // from now on an unlinked pair
+        if (!pass.trial) {
+          word = McaUnlinkedPair::keep_contact(word, v, p.d);
+          // a contact left pressed stores energy the break did not release
+          const McaUnlinkedPair left(ri, rj, v[C::REF], a, p.r, domain->dimension);
+          if (left.overlap < 0.0) tally.changes.ejump -= tally.w * left.energy();
+        }
         return;
       }
       if (eflag_either) out.evdwl += link.intact * ehg;
     } else {
-      McaUnlinkedPair(ri, rj, a, p.r, domain->dimension)
+      McaUnlinkedPair(ri, rj, contact, a, p.r, domain->dimension)
           .step(model, word, pass.trial, v, p, turning, a, vel, omega, dt, tally, eflag_either, out);
     }
 

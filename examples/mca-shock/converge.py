@@ -167,7 +167,7 @@ def plot(results, sizes, fractures, pyko):
     fig, grid = plt.subplots(2, 3, figsize=(13.5, 8.0))
     axes = list(grid.flat)
     axes[-1].axis("off")
-    styles = {"threshold": "--", "kinetics": "-"}
+    styles = {"threshold": "--", "kinetics": "-", "pressure": ":"}
     for ax, v in zip(axes, SPEEDS):
         for f in fractures:
             for k, d in enumerate(sizes):
@@ -186,7 +186,7 @@ def plot(results, sizes, fractures, pyko):
     rates = np.logspace(4, 7, 50)
     ax.plot(rates, AL["spall"] * (rates / AL["spall_rate"]) ** AL["spall_m"] / 1e9, "k-",
             label="card: 1.2 GPa (rate / 1e5 /s)^0.2")
-    for f, marker in (("threshold", "x"), ("kinetics", "o")):
+    for f, marker in (("threshold", "x"), ("kinetics", "o"), ("pressure", "s")):
         if f not in fractures:
             continue
         for k, d in enumerate(sizes):

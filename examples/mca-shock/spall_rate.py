@@ -37,12 +37,12 @@ FAST = [1000, 2000]
 RUNS = os.path.join(HERE, "runs", "spall")
 
 
-def impact(metal, v, seed):
-    """One plate of in.plate with 5 um elements (kept in its folder): whether it spalled, its
-    cost, and the readings of its free-surface record."""
+def impact(metal, v, seed, fracture="kinetics"):
+    """One plate of in.plate with 5 um elements and the fracture (kept in its folder): whether
+    it spalled, its cost, and the readings of its free-surface record."""
     cells = int(round(10 * 10.0 / D_UM))
     var = {"metal": metal, "v": v, "here": HERE + "/", "out": "run", "d": D_UM * 1e-6,
-           "flyer": cells, "target": 2 * cells, "records": 800}
+           "flyer": cells, "target": 2 * cells, "records": 800, "fracture": fracture}
     if seed:
         var["seed"] = seed
 
@@ -52,7 +52,8 @@ def impact(metal, v, seed):
         loop, _, steps, atoms = loops(out)[-1]
         large = int(out.split("large fragments of the target: ")[1].split(";")[0])
         return dict(loop=loop, steps=steps, atoms=atoms, spalled=large >= 2)
-    workdir = os.path.join(RUNS, f"{metal}-{v}-{seed}")
+    workdir = os.path.join(RUNS, f"{metal}-{v}-{seed}" + ("" if fracture == "kinetics"
+                                                           else f"-{fracture}"))
     result = keep(workdir, make)
     record = np.loadtxt(os.path.join(workdir, "run.visar"))
     return dict(result, **readings(record[:, 1], record[:, 2], v, METALS[metal]),
@@ -95,17 +96,33 @@ def threshold(metal):
 
 
 def study(metal):
-    """The threshold and the ensembles at 1.1, 2, 5 times it and at 1 and 2 km/s."""
+    """The threshold, the ensembles at 1.1, 2, 5 times it and at 1 and 2 km/s, and the runs
+    from rest with the mean-tension threshold at those speeds."""
     vth = threshold(metal)
     below = [impact(metal, vth - 10, seed)["spalled"] for seed in SEEDS]
     speeds = sorted({int(round(k * vth / 10.0)) * 10 for k in (1.1, 2.0, 5.0)} | set(FAST))
     runs = {v: [impact(metal, v, seed) for seed in SEEDS] for v in speeds}
-    return dict(threshold=vth, below=below, runs=runs)
+    pressure = {v: impact(metal, v, 0, "pressure") for v in speeds}
+    return dict(threshold=vth, below=below, runs=runs, pressure=pressure)
+
+
+def peer(folder, metal, v):
+    """The readings of a peer code's record folder/<metal><v>.visar (resampled at 0.2 ns), or
+    None."""
+    path = os.path.join(folder, f"{metal}{v}.visar") if folder else ""
+    if not os.path.exists(path):
+        return None
+    data = np.loadtxt(path)
+    rows = np.concatenate([[True], np.diff(data[:, 0]) > 0])
+    t, u = data[rows, 0], data[rows, 1]
+    grid = np.arange(t[0], t[-1], 0.2e-9)
+    return dict(readings(grid, np.interp(grid, t, u), v, METALS[metal]), t=t, u=u)
 
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.strip().split("\n")[0])
     ap.add_argument("--jobs", type=int, default=2)
+    ap.add_argument("--pyko", default=None, help="folder of a peer code's <metal><V>.visar")
     opts = ap.parse_args()
     metals = ["al", "cu"]
     studies = dict(zip(metals, parallel(study, metals, opts.jobs) if opts.jobs > 1
@@ -141,10 +158,36 @@ def main():
                           "Kanel (GPa)", "1/2 rho0 c0 dU (GPa)", "law at the rate (GPa)",
                           "Kanel / law", "plane: mean tension (GPa)", "plane: rate (1e5 /s)",
                           "plane: tension / law", "run (s)"], rows), ""]
+    lines += one_fracture(studies, opts.pyko)
     with open(os.path.join(HERE, "spall_rate.md"), "w") as f:
         f.write("\n".join(lines))
     print("\n".join(lines))
-    plot(studies)
+    plot(studies, opts.pyko)
+
+
+def one_fracture(studies, pyko):
+    """The table of both codes with a threshold S on the mean tension: Kanel's reading over S."""
+    rows = []
+    for metal, st in studies.items():
+        m = METALS[metal]
+        for v, r in st["pressure"].items():
+            ref = peer(pyko, metal, v)
+            rows.append([m["name"], v, "yes" if r["spalled"] else "no", fmt(r["kanel"], ".3f"),
+                         fmt(r["kanel"] and r["kanel"] * 1e9 / m["spall"], ".3f"),
+                         fmt(ref and ref["kanel"], ".3f"),
+                         fmt(ref and ref["kanel"] and ref["kanel"] * 1e9 / m["spall"], ".3f"),
+                         fmt(ref and ref["kanel"] and r["kanel"] and r["kanel"] / ref["kanel"],
+                             ".3f")])
+    return ["", "Both codes with one fracture, a threshold S on the mean tension (the card's "
+            "spall strength; the elements' run from rest with -var fracture pressure, the peer's "
+            "at 1 um cells; '-' where no record was given or no pull-back could be read):", "",
+            *table(["metal", "v (m/s)", "elements spalled", "elements: Kanel (GPa)",
+                    "elements: Kanel / S", "peer: Kanel (GPa)", "peer: Kanel / S",
+                    "elements / peer"], rows), ""]
+
+
+def fmt(x, spec):
+    return "-" if x is None else format(x, spec)
 
 
 def spread(values, digits):
@@ -154,13 +197,13 @@ def spread(values, digits):
     return f"{values[0]:.{digits}f}" if values else "-"
 
 
-def plot(studies):
+def plot(studies, pyko):
     """spall_rate.png: the strength read from each record against its strain rate, beside the
-    cards' rate laws; and aluminium's records."""
+    cards' rate laws; and each metal's records (from rest) over the peer's where given."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    fig, (ax, bx) = plt.subplots(1, 2, figsize=(11, 4.2))
+    fig, (ax, *records) = plt.subplots(1, 3, figsize=(16, 5.0))
     rates = np.logspace(4.5, 6.8, 50)
     for k, (metal, st) in enumerate(studies.items()):
         m = METALS[metal]
@@ -176,14 +219,20 @@ def plot(studies):
     ax.set_ylabel("spall strength (GPa)")
     ax.set_title("spall strength against strain rate")
     ax.legend(fontsize=7)
-    for k, v in enumerate(studies["al"]["runs"]):
-        record = np.loadtxt(os.path.join(RUNS, f"al-{v}-0", "run.visar"))
-        bx.plot(record[:, 1] * 1e9, record[:, 2], color=f"C{k}", lw=1, label=f"{v} m/s")
-    bx.set_xlim(30, 180)
-    bx.set_xlabel("time (ns)")
-    bx.set_ylabel("free-surface velocity (m/s)")
-    bx.set_title("aluminium 6061-T6, 5 um elements (run from rest)")
-    bx.legend(fontsize=7)
+    for metal, bx in zip(studies, records):
+        for k, v in enumerate(studies[metal]["runs"]):
+            record = np.loadtxt(os.path.join(RUNS, f"{metal}-{v}-0", "run.visar"))
+            bx.plot(record[:, 1] * 1e9, record[:, 2], color=f"C{k}", lw=1, label=f"{v} m/s")
+            ref = peer(pyko, metal, v)
+            if ref:
+                bx.plot(ref["t"] * 1e9, ref["u"], ":", color=f"C{k}", lw=1)
+        if pyko:
+            bx.plot([], [], "k:", lw=1, label="peer (pyKO, 1 um), threshold")
+        bx.set_xlim(30, 180 if metal == "al" else 230)
+        bx.set_xlabel("time (ns)")
+        bx.set_ylabel("free-surface velocity (m/s)")
+        bx.set_title(f"{METALS[metal]['name']}, 5 um elements, kinetics (run from rest)")
+        bx.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.14), ncol=3)
     fig.tight_layout()
     fig.savefig(os.path.join(HERE, "spall_rate.png"), dpi=110)
 

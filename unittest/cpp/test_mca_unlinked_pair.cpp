@@ -1,6 +1,7 @@
 // McaUnlinkedPair (mca_unlinked_pair.h, doc/pair_mca.rst "Unlinked contacts"): compression
 // S_u a (r - R_i - R_j), dry friction capped at mu |sigma_n|, viscous friction eta v_t of the
-// contact points' relative tangential velocity, welding at the weld stress.
+// contact points' relative tangential velocity, welding at the weld stress; a broken link's
+// contact at its stress-free separation r_ref + e_p.
 #include "mca_unlinked_pair.h"
 
 #include "gtest/gtest.h"
@@ -30,14 +31,14 @@ McaPairFrame frame(double r, double ri, double rj)
 TEST(McaUnlinkedPair, CompressionOnTheHarmonicMeanFace)
 {
   const double ri = 0.5, rj = 0.3, a = 7.0, r = 0.79;
-  const McaUnlinkedPair touch(ri, rj, a, r, 3);
+  const McaUnlinkedPair touch(ri, rj, ri + rj, a, r, 3);
   const double rh = 2.0 * ri * rj / (ri + rj);
   EXPECT_NEAR(touch.area, std::sqrt(2.0) * rh * rh, 1e-15);
   EXPECT_NEAR(touch.sigma, a * (r - ri - rj), 1e-15);
   // the normal force is minus the slope of the energy S a overlap^2 / 2
   const double h = 1e-7;
   auto energy = [&](double rr) {
-    const McaUnlinkedPair t(ri, rj, a, rr, 3);
+    const McaUnlinkedPair t(ri, rj, ri + rj, a, rr, 3);
     return 0.5 * t.area * a * t.overlap * t.overlap;
   };
   EXPECT_NEAR((energy(r + h) - energy(r - h)) / (2.0 * h), touch.area * touch.sigma, 1e-9);
@@ -65,7 +66,7 @@ TEST(McaUnlinkedPair, SlidingAtTheCapDissipatesMuSigmaPerDistance)
   const double ri = 0.5, rj = 0.5, a = 50.0, r = 0.98, mu = 0.3, du = 0.01;
   McaPairModel model;
   model.friction = McaFriction{mu, 0.0, 0.0};
-  const McaUnlinkedPair touch(ri, rj, a, r, 3);
+  const McaUnlinkedPair touch(ri, rj, ri + rj, a, r, 3);
   double v[C::NVALUES] = {};
   int word = 0;
   StateTally changes;
@@ -80,7 +81,7 @@ TEST(McaUnlinkedPair, SlidingAtTheCapDissipatesMuSigmaPerDistance)
   double *x[2] = {x0, x1};
   McaPairFrame moved(x, 0, 1);
   moved.orient(ri, rj);
-  const McaUnlinkedPair pressed(ri, rj, a, moved.r, 3);
+  const McaUnlinkedPair pressed(ri, rj, ri + rj, a, moved.r, 3);
   const double before = changes.work[WORK_FRICTION];
   pressed.step(model, word, 0, v, moved, nullptr, a, nullptr, nullptr, 0.0, tally, true, out);
   const double cap = mu * std::fabs(pressed.sigma);
@@ -101,7 +102,7 @@ TEST(McaUnlinkedPair, WeldsPressedAtTheWeldStressIfTheTypesLink)
   const McaPairTally tally{changes, 1.0, nullptr, 0, 1, 20.0, 20.0, true, nullptr};
   McaPairForce out;
   const McaPairFrame p = frame(r, ri, rj);
-  const McaUnlinkedPair touch(ri, rj, a, r, 3);
+  const McaUnlinkedPair touch(ri, rj, ri + rj, a, r, 3);
   for (const bool links : {false, true}) {
     model.links = links;
     double v[C::NVALUES] = {};
@@ -114,4 +115,47 @@ TEST(McaUnlinkedPair, WeldsPressedAtTheWeldStressIfTheTypesLink)
     }
   }
   EXPECT_EQ(changes.formed, 1.0);
+}
+
+TEST(McaUnlinkedPair, ABrokenLinkTouchesAtItsStressFreeSeparation)
+{
+  const double ri = 0.5, rj = 0.5, a = 10.0;
+  double v[C::NVALUES];
+  for (int k = 0; k < C::NVALUES; k++) v[k] = 1.0 + k;    // a link's state
+  v[C::REF] = 0.97;
+  v[C::EPL] = -0.05;    // shortened by plastic flow
+  const double d[3] = {0.0, 0.93, 0.0};
+  int word = state_word(1, 0, 0);    // broken now
+  word = McaUnlinkedPair::keep_contact(word, v, d);
+  EXPECT_TRUE(word & WORD_KEPT);
+  EXPECT_EQ(state_now(word), 0);
+  EXPECT_DOUBLE_EQ(v[C::REF], 0.92);
+  for (int k = 0; k < 3; k++) {
+    EXPECT_EQ(v[C::TAU + k], 0.0);    // no tangential stress carried over
+    EXPECT_EQ(v[C::DPREV + k], d[k]);
+  }
+  for (const int k : {C::AREA, C::KAPPA, C::EPL, C::SIG, C::ET, C::EHG}) EXPECT_EQ(v[k], 0.0);
+  EXPECT_DOUBLE_EQ(McaUnlinkedPair::contact_distance(word, v, ri, rj), 0.92);
+  EXPECT_EQ(McaUnlinkedPair::contact_distance(word & ~WORD_KEPT, v, ri, rj), ri + rj);
+  // pressed from there: S_u a (r - 0.92), energy S_u a (r - 0.92)^2 / 2
+  const McaUnlinkedPair pressed(ri, rj, 0.92, a, 0.91, 3);
+  EXPECT_NEAR(pressed.sigma, -0.1, 1e-12);
+  EXPECT_NEAR(pressed.energy(), 0.5 * pressed.area * a * 0.01 * 0.01, 1e-15);
+}
+
+TEST(McaUnlinkedPair, AnOpenContactKeepsABrokenLinksDistanceOnlyWhileCloserThanTheRadii)
+{
+  const double ri = 0.5, rj = 0.5;
+  double v[C::NVALUES] = {};
+  v[C::REF] = 0.92;
+  v[C::TAU] = 0.3;
+  const double d[3] = {0.0, 0.95, 0.0};
+  const int kept = state_word(0, 0, 0) | WORD_KEPT;
+  const int word = McaUnlinkedPair::open(kept, v, 0.95 * 0.95, d, ri + rj);
+  EXPECT_EQ(word, kept);    // open at 0.95 > 0.92, still closer than R_i + R_j
+  EXPECT_EQ(v[C::TAU], 0.0);
+  EXPECT_EQ(v[C::DPREV + 1], 0.95);
+  EXPECT_EQ(McaUnlinkedPair::open(kept, v, 1.01 * 1.01, d, ri + rj), 0);    // apart: forgotten
+  v[C::REF] = 0.0;    // a contact of the elements' radii keeps nothing open
+  EXPECT_EQ(McaUnlinkedPair::open(kept, v, 0.95 * 0.95, d, ri + rj), 0);
 }

@@ -26,7 +26,7 @@ import re
 import numpy as np
 import pytest
 
-from conftest import PLUGIN, run_lmp, session, thermo_rows
+from conftest import PLUGIN, lmp_error, run_lmp, session, thermo_rows
 
 RHO0, C0, S, GAMMA0, G, Y = 2703.0, 5350.0, 1.34, 2.0, 26.0e9, 0.29e9
 K = RHO0 * C0 ** 2
@@ -325,6 +325,25 @@ def test_example_plate_spalls_and_its_free_surface_flies_at_v(tmp_path):
     t, u = np.loadtxt(tmp_path / "plate.visar", usecols=(1, 2), unpack=True)
     assert u.max() == pytest.approx(400.0, rel=0.05)
     assert u[-1] < 0.98 * u.max()    # the pull-back and the spall signal's ringing
+
+
+def test_example_plate_takes_a_mean_tension_threshold_as_pyko_does(tmp_path):
+    """-var fracture pressure: the card's spall strength as a threshold on the mean tension (the
+    kinetics with m = 0.01, which the summary shows: S at 1e6 /s, 1.023 S at ten times the rate);
+    an unknown fracture is refused naming the three."""
+    out = example(tmp_path, "in.plate", metal="al", v=400, d=1.0e-5, flyer=5, target=10, cells=3,
+                  fracture="pressure")
+    line = next(x for x in out.splitlines() if "spall kinetics:" in x)
+    words = re.search(r"spall kinetics: (\S+) at the strain rate \S+ per time unit \((\S+) /s\), "
+                      r"m (\S+): (\S+) at ten times the rate", line).groups()
+    s, per_second, m, tenfold = (float(w) for w in words)
+    assert (s, per_second, m) == (pytest.approx(1.2e9), pytest.approx(1.0e6), 0.01)
+    assert tenfold == pytest.approx(1.2e9 * 10 ** 0.01, rel=1e-5)
+    assert re.search(r"large fragments of the target: 2", out)
+    text = open(os.path.join(EXAMPLE, "in.plate")).read().replace("clusterdynplugin.so", PLUGIN)
+    bad = lmp_error(tmp_path, [f"variable here index {EXAMPLE}/", "variable fracture index brittle"]
+                    + text.splitlines())
+    assert "-var fracture brittle: give kinetics" in bad and "or pressure" in bad
 
 
 def test_example_tlsph_reference_runs_and_spalls(tmp_path):

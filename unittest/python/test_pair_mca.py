@@ -670,11 +670,10 @@ def test_two_materials_of_equal_strength_take_the_one_that_unlinks_first_in_eith
 
 
 
-@pytest.mark.xfail(strict=True, reason="known (doc/pair_mca.rst): the contact of a link broken "
-                   "while its elements overlap pushes them apart")
 def test_a_link_broken_in_overlap_leaves_no_repulsion():
     """A dimer linked stress free at 0.97 d, stretched until the link breaks at 0.974 d: no
-    force should remain between the elements (they are apart from their stress-free distance)."""
+    force remains between the elements (their contact closes at the link's stress-free
+    distance, not at R_i + R_j: before 28 Nov 2026 it pushed them apart with 0.007)."""
     with session() as lmp:
         lmp.commands_list([
             "units lj", "atom_style sphere", "atom_modify map array", "boundary f f f",
