@@ -2,7 +2,8 @@
 # Pair time of two builds of the plugin side by side, alternating runs in one session:
 # pair_style mca on the elastic block of bench_mca.md (examples/mca-elastic/in.bpm_timing,
 # 4 n^3 elements) and on bench/in.bit_mca (every part of the style: breaking, damage, yield,
-# friction, welding), and morse/spline on in.bench_pair.  Prints each case's median
+# friction, welding), on the shock law's plate (examples/mca-shock/in.plate, aluminium at
+# 400 m/s, 10 um elements), and morse/spline on in.bench_pair.  Prints each case's median
 # Pair seconds (LAMMPS's timing breakdown, avg column) for A and B and their ratio B/A.
 #   bash bench/bench_pair_ab.sh BUILD_A BUILD_B [repeats]    (folders with env.sh)
 set -euo pipefail
@@ -29,6 +30,8 @@ case_() {  # label, input, lmp args...
 }
 case_ "mca elastic block n 8, 500 steps" "$examples/mca-elastic/in.bpm_timing" -var n 8 -var steps 500
 case_ "mca every part, 8 cells, 2 x 300 steps" "$here/in.bit_mca" -var cells 8
+case_ "mca shock plate, aluminium at 400 m/s, 10 um" "$examples/mca-shock/in.plate" -var metal al \
+  -var v 400 -var d 1e-5 -var records 0 -var here "$examples/mca-shock/"
 case_ "morse/spline cut 1.2, block, 200 steps" "$here/in.bench_pair" -var steps 200 -var temp 1e16 \
   -var pair "morse/spline cut 1.2" -var coeff "2.46e-6 3.76e5 1.0e-5"
 rm -rf "$work"

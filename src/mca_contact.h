@@ -81,6 +81,9 @@ namespace ClusterDyn {
       return 0.5 * (bend * (dot(rot, rot) - along * along) + twist * along * along);
     }
 
+    // this step's change of the separation, r less |DPREV| (the last evaluation's)
+    static double motion(const double *v, double r) { return r - sqrt(dot(v + DPREV, v + DPREV)); }
+
     static double dot(const double *a, const double *b)
     {
       return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];

@@ -10,8 +10,10 @@
 #ifndef LMP_CLUSTERDYN_MCA_ELEMENT_STRESS_H
 #define LMP_CLUSTERDYN_MCA_ELEMENT_STRESS_H
 
+#include "mca_contact.h"
 #include "mca_element.h"
 #include "mca_exchange.h"
+#include "mca_pair_walk.h"
 #include "pointers.h"
 
 #include <cstdint>
@@ -51,6 +53,28 @@ namespace ClusterDyn {
     {
       rows[i][MEAN_SUM] += weight * sigma;
       rows[i][MEAN_WEIGHT] += weight;
+    }
+    // a linked pair's trial stresses (v: its state, SIG and TAU; intact: 1 - D; ai, aj: the
+    // half stiffnesses) on element i and, where jown, j: its share of Love's sum, and its
+    // normal stress in the mean its elements' pairs return about, weighted by S w / ((1 - D)
+    // a), w the element's share of the pair's elongation, so that a return by one phi about it
+    // keeps the element's volume theta and does work sum S sigma dp >= 0
+    void add_trial(int i, int j, const McaPairFrame &p, const double *v, double intact,
+                   double ai, double aj, bool jown)
+    {
+      using C = McaContact;
+      const double s = intact * v[C::AREA];
+      const double *tau = v + C::TAU;
+      double fi[3], sym[6];
+      for (int k = 0; k < 3; k++) fi[k] = s * (v[C::SIG] * p.n[k] + tau[k]);
+      McaElement::dyad(p.n, fi, sym);
+      add(i, p.qi, sym, 0);
+      const double weight = v[C::AREA] / (intact * C::series(ai, aj) * (ai + aj));
+      add_mean(i, weight * aj, intact * v[C::SIG]);
+      if (jown) {
+        add(j, p.qj, sym, 0);
+        add_mean(j, weight * ai, intact * v[C::SIG]);
+      }
     }
     // the sums onto their owners, divided by the volume (energy/volume; in pressure units if
     // asked, and then marked as the stresses of this step's atoms)

@@ -49,6 +49,16 @@ namespace ClusterDyn {
     {
     }
 
+    // the trial stresses of this step: the effective normal stress before any return (its
+    // many-body part: volumetric), returned, and the tangential stress after this step's slide
+    // (stored in v with its energy ET; turn: null where the pair does not turn; dut: the slide)
+    static double trial(double *v, double a, const McaPairFrame &p, double volumetric,
+                        const C::Turn *turn, double *dut)
+    {
+      C::slide(v + C::TAU, v + C::DPREV, p.d, p.n, turn, a, dut, v + C::ET);
+      return elastic_stress(v, a, p.r) + volumetric;
+    }
+
     // the elastic part of the effective normal stress at separation r
     static double elastic_stress(const double *v, double a, double r)
     {
@@ -129,7 +139,7 @@ namespace ClusterDyn {
       if (phi < 1.0) {
         double dv;
         tally.work(WORK_PLASTIC, plastic_return(sigma, phi, mean, p.r, dv));
-        tally.volume_change(McaManybody::CHANGE_PLASTIC, dv);
+        tally.volume_change(McaVolumeChanges::CHANGE_PLASTIC, dv);
       }
       if (turn) rotate(*turn, omega_i, omega_j, dt);
       double moment[3], lost = 0.0;
@@ -143,8 +153,9 @@ namespace ClusterDyn {
         outcome = BREAKS;
       }
       if (outcome != HOLDS)
-        tally.volume_change(outcome == BREAKS ? McaManybody::CHANGE_STATE
-                                              : McaManybody::CHANGE_DAMAGE, -lost * area * elong);
+        tally.volume_change(outcome == BREAKS ? McaVolumeChanges::CHANGE_STATE
+                                              : McaVolumeChanges::CHANGE_DAMAGE,
+                            -lost * area * elong);
       if (outcome == BREAKS) {
         tally.changes.broken += tally.w;
         tally.changes.ejump += tally.w * (intact * epair);

@@ -25,6 +25,7 @@
 #include "mca_element_eos.h"
 #include "mca_exchange.h"
 #include "mca_material.h"
+#include "mca_pair_changes.h"
 #include "atom.h"
 #include "pair_state.h"
 #include "pointers.h"
@@ -34,9 +35,8 @@
 namespace LAMMPS_NS {
 namespace ClusterDyn {
 
-  class McaManybody : protected Pointers {
+  class McaManybody final : protected Pointers, public McaVolumeChanges {
    public:
-    enum { CHANGE_STATE = 0, CHANGE_DAMAGE = 1, CHANGE_PLASTIC = 2, MOTION = 3, NCHANGES = 4 };
 
     McaManybody(LAMMPS *lmp, McaExchange &exchange) :
         Pointers(lmp), exchange(exchange), theta(nullptr), dtheta(nullptr), extra(nullptr), nmax(0),
@@ -77,7 +77,8 @@ namespace ClusterDyn {
 
     // the changes of theta this step makes (volume changes dv of pairs, shared as elongations)
     void begin_changes(int nall);
-    void add_change(int column, int i, int j, double dv, double ai, double aj, bool jown)
+    void add_change(int column, int i, int j, double dv, double ai, double aj,
+                    bool jown) override
     {
       dtheta[i][column] += dv * aj / (ai + aj);
       if (jown) dtheta[j][column] += dv * ai / (ai + aj);

@@ -7,15 +7,14 @@
    (McaPairTally): the state counts and energies of the pair state (a pair
    with a ghost counts w = 1/2 with newton off, as both processors see it),
    the dissipated works, the changes of volume that the many-body term
-   follows (mca_manybody.h), and the plastic work that heats elements with a
-   shock equation of state (mca_element_eos.h).
+   follows, and the plastic work that heats elements with a shock equation
+   of state, through their interfaces (mca_pair_changes.h).
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_CLUSTERDYN_MCA_PAIR_TALLY_H
 #define LMP_CLUSTERDYN_MCA_PAIR_TALLY_H
 
-#include "mca_element_eos.h"
-#include "mca_manybody.h"
+#include "mca_pair_changes.h"
 #include "pair_state.h"
 
 namespace LAMMPS_NS {
@@ -39,11 +38,11 @@ namespace ClusterDyn {
   struct McaPairTally {
     StateTally &changes;
     double w;                 // 1, or 1/2 for a pair with a ghost and newton off
-    McaManybody *volume;      // null: the many-body term does not follow the changes
+    McaVolumeChanges *volume;    // null: the many-body term does not follow the changes
     int i, j;
     double ai, aj;            // the elements' half stiffnesses
     bool jown;                // j's side is tallied here
-    McaElementEos *heat;      // null: no element takes the plastic work as heat
+    McaPlasticHeat *heat;        // null: no element takes the plastic work as heat
 
     void work(McaWork kind, double energy) const
     {

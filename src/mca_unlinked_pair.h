@@ -65,6 +65,17 @@ namespace ClusterDyn {
       return kept_word(word, true);
     }
 
+    // the contact a link leaves as it breaks (keep_contact): a contact left pressed stores
+    // energy the break did not release (tallied against it); returns the pair's word
+    static int left_by_break(int word, double *v, const McaPairFrame &p, double ri, double rj,
+                             double a, int dimension, const McaPairTally &tally)
+    {
+      word = keep_contact(word, v, p.d);
+      const McaUnlinkedPair left(ri, rj, v[C::REF], a, p.r, dimension);
+      if (left.overlap < 0.0) tally.changes.ejump -= tally.w * left.energy();
+      return word;
+    }
+
     // an open contact (closer than R_i + R_j, rsq = r^2, d = x_j - x_i) keeps nothing but a broken
     // link's contact distance, and that while the pair is closer than R_i + R_j (its tangential
     // stress cleared, d kept for the next slide); returns the pair's word
@@ -144,7 +155,7 @@ namespace ClusterDyn {
         v[C::ROT] = v[C::ROT + 1] = v[C::ROT + 2] = 0.0;
         word = state_word(kept_word(word, false), 1, trial);
         tally.changes.formed += tally.w;
-        tally.volume_change(McaManybody::CHANGE_STATE, area * overlap);
+        tally.volume_change(McaVolumeChanges::CHANGE_STATE, area * overlap);
       }
     }
   };

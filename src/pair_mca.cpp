@@ -12,9 +12,8 @@
 
 #include "pair_mca.h"
 
-#include "mca_hourglass_spring.h"
 #include "mca_linked_pair.h"
-#include "mca_pair_walk.h"
+#include "mca_pressure_pair.h"
 #include "mca_unlinked_pair.h"
 #include "skin_check.h"
 
@@ -39,8 +38,7 @@ using C = McaContact;
 
 PairMCA::PairMCA(LAMMPS *lmp) :
     PairColumnExchange(lmp), types(lmp), guard(lmp), plasticity(lmp, *this), manybody(lmp, *this), stress(lmp, *this),
-    eos(lmp, *this), state(lmp, this, "Pair mca", C::NVALUES, NWORK), tracks_changes(false), linking(lmp, *this), segments(lmp), report(lmp), full(nullptr),
-    stiffness(nullptr), hourglass(nullptr), nmax(0)
+    eos(lmp, *this), stiffness(lmp), state(lmp, this, "Pair mca", C::NVALUES, NWORK), tracks_changes(false), linking(lmp, *this), segments(lmp), report(lmp), full(nullptr)
 {
   single_enable = 0;
   restartinfo = 1;
@@ -61,26 +59,19 @@ PairMCA::PairMCA(LAMMPS *lmp) :
 PairMCA::~PairMCA()
 {
   delete[] pvector;
-  memory->destroy(stiffness);
-  memory->destroy(hourglass);
   if (allocated) {
     memory->destroy(setflag);
     memory->destroy(cutsq);
   }
 }
 
-void PairMCA::grow(int nall)
+void PairMCA::grow()
 {
   manybody.grow(atom->nmax);
   stress.grow(atom->nmax);
   plasticity.grow(atom->nmax);
   if (eos.active()) eos.grow(atom->nmax);
-  if (nall <= nmax) return;
-  nmax = atom->nmax;
-  memory->destroy(stiffness);
-  memory->destroy(hourglass);
-  memory->create(stiffness, nmax, "pair:stiffness");
-  memory->create(hourglass, nmax, 2, "pair:hourglass");
+  stiffness.grow(atom->nmax);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -89,16 +80,8 @@ void PairMCA::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
   const StatePass pass = state.begin();
-  const int nall = atom->nlocal + atom->nghost;
-  grow(nall);
-  for (int i = 0; i < nall; i++)
-    stiffness[i] = C::half_stiffness(types.scaled()[atom->type[i]].shear, atom->radius[i]);
-  if (eos.active())
-    for (int i = 0; i < nall; i++) {
-      const McaMaterial &m = types.scaled()[atom->type[i]];
-      hourglass[i][0] = 2.0 * m.hourglass * (m.bulk + 4.0 * m.shear / 3.0) / atom->radius[i];
-      hourglass[i][1] = 4.0 * m.hourglass / atom->radius[i];
-    }
+  grow();
+  stiffness.compute(types.scaled(), eos.active());
   guard.each_step();
   if (pass.fresh) linking.make(list, pass, types, setting.tolerance, setting.fraction);
   if (update->setupflag && update->whichflag == 1) guard.at_setup(types.scaled(), setting.fraction);
@@ -107,7 +90,7 @@ void PairMCA::compute(int eflag, int vflag)
   StateTally changes;
   pair_forces(pass, changes);
   if (segments.active())
-    segments.compute(full, stiffness, setting.tolerance, elements_turn(), update->dt, changes,
+    segments.compute(full, stiffness.halves(), setting.tolerance, elements_turn(), update->dt, changes,
                      *this, stress.wanted() ? &stress : nullptr);
   if (stress.wanted()) stress.to_owners(true);
   if (tracks_changes)
@@ -139,10 +122,10 @@ void PairMCA::volumetric_strain(const StatePass &pass)
     const double carried = resp.intact(v[C::KAPPA]) * v[C::AREA], r = sqrt(p.rsq);
     const double elong = carried * McaLinkedPair::elongation(v, r);
     const bool jown = newton || j < nlocal;
-    manybody.add_elongation(i, j, elong, stiffness[i], stiffness[j], jown);
+    manybody.add_elongation(i, j, elong, stiffness.half(i), stiffness.half(j), jown);
     if (pressure) {
       eos.add_pair(i, j, p.d, v + C::DPREV, carried / v[C::REF], jown);
-      v[C::DR] = moving ? r - sqrt(C::dot(v + C::DPREV, v + C::DPREV)) : 0.0;
+      v[C::DR] = moving ? C::motion(v, r) : 0.0;
       v[C::HG] += v[C::DR];    // less the affine part: later
     }
   });
@@ -184,27 +167,13 @@ void PairMCA::plastic_trial(const StatePass &pass)
     p.orient(radius[i], radius[j]);
     const C::Turn turn = p.turn(omega[i], omega[j], dt);
     // this step's motion of the pair, for the trapezoid rule of the plastic work
-    v[C::DR] = moving ? sqrt(p.rsq) - sqrt(C::dot(v + C::DPREV, v + C::DPREV)) : 0.0;
+    v[C::DR] = moving ? C::motion(v, sqrt(p.rsq)) : 0.0;
     double dut[3];
     v[C::SIG] = trial_stresses(i, j, v, p, moving ? &turn : nullptr, dut);
     v[C::DTAU] = moving ? C::dot(v + C::TAU, dut) : 0.0;
     const double intact = types.model(atom->type[i], atom->type[j]).response.intact(v[C::KAPPA]);
-    const double s = intact * v[C::AREA];
-    const double *tau = v + C::TAU;
-    double fi[3], sym[6];
-    for (int k = 0; k < 3; k++) fi[k] = s * (v[C::SIG] * p.n[k] + tau[k]);
-    McaElement::dyad(p.n, fi, sym);
-    stress.add(i, p.qi, sym, 0);
-    // the mean each element's pairs return about: their transmitted normal stresses weighted
-    // by S w / ((1 - D) a), w the element's share of the pair's elongation, so that a return
-    // by one phi about it keeps the element's volume theta and does work sum S sigma dp >= 0
-    const double ai = stiffness[i], aj = stiffness[j];
-    const double weight = v[C::AREA] / (intact * C::series(ai, aj) * (ai + aj));
-    stress.add_mean(i, weight * aj, intact * v[C::SIG]);
-    if (newton || j < nlocal) {
-      stress.add(j, p.qj, sym, 0);
-      stress.add_mean(j, weight * ai, intact * v[C::SIG]);
-    }
+    stress.add_trial(i, j, p, v, intact, stiffness.half(i), stiffness.half(j),
+                     newton || j < nlocal);
   });
   stress.to_owners(false);
   plasticity.return_map(stress.trial(), types.scaled());
@@ -214,7 +183,7 @@ void PairMCA::plastic_trial(const StatePass &pass)
    every pair's forces and torques: a linked pair by its law
    (mca_linked_pair.h: sigma~ from this step's trial, returned by plastic
    flow, then damage and breaking), an unlinked pair closer than
-   R_i + R_j by its contact (mca_unlinked_pair.h); torques q_ij n x F_t on
+   its contact distance by its contact (mca_unlinked_pair.h); torques q_ij n x F_t on
    i and q_ji n x F_t on j, and a link's moment on i and its opposite on
    j; the energy of each pair (the elements': compute())
 ------------------------------------------------------------------------- */
@@ -230,6 +199,7 @@ void PairMCA::pair_forces(const StatePass &pass, StateTally &changes)
   // a minimizer's velocities mean nothing
   double **vel = update->whichflag == 1 ? atom->v : nullptr;
   const double dt = update->dt;
+  const McaPressurePair pressure{eos, stiffness, atom->type, moving};
   if (stress.wanted()) stress.zero(nall);
   if (tracks_changes) manybody.begin_changes(nall);
   if (eos.active()) eos.begin_heat(nall);
@@ -251,7 +221,7 @@ void PairMCA::pair_forces(const StatePass &pass, StateTally &changes)
     }
     if (p.rsq == 0.0) coincident_elements(lmp, i, j);
     p.orient(ri, rj);
-    const double ai = stiffness[i], aj = stiffness[j], a = C::series(ai, aj);
+    const double ai = stiffness.half(i), aj = stiffness.half(j), a = C::series(ai, aj);
     const bool jown = newton || j < nlocal;
     const McaPairTally tally{changes, jown ? 1.0 : 0.5, tracks_changes ? &manybody : nullptr,
                              i, j, ai, aj, jown, eos.active() ? &eos : nullptr};
@@ -274,16 +244,12 @@ void PairMCA::pair_forces(const StatePass &pass, StateTally &changes)
       if (plastic) tally.volume_change(McaManybody::MOTION, link.intact * v[C::AREA] * v[C::DR]);
       McaPressureLoad load;
       double ehg = 0.0;
-      if (si || sj) ehg = pressure_forces(i, j, v, p, si && sj, load);
+      if (si || sj) ehg = pressure.load(i, j, v, p, si && sj, load);
       if (!link.step(sigma, phi, mean, p, turning, omega[i], omega[j], dt, tally, eflag_either,
                      si || sj ? &load : nullptr, out)) {
         word = state_word(word, 0, pass.trial);    // from now on an unlinked pair
-        if (!pass.trial) {
-          word = McaUnlinkedPair::keep_contact(word, v, p.d);
-          // a contact left pressed stores energy the break did not release
-          const McaUnlinkedPair left(ri, rj, v[C::REF], a, p.r, domain->dimension);
-          if (left.overlap < 0.0) tally.changes.ejump -= tally.w * left.energy();
-        }
+        if (!pass.trial)
+          word = McaUnlinkedPair::left_by_break(word, v, p, ri, rj, a, domain->dimension, tally);
         return;
       }
       if (eflag_either) out.evdwl += link.intact * ehg;
@@ -314,45 +280,13 @@ void PairMCA::pair_forces(const StatePass &pass, StateTally &changes)
   });
 }
 
-// a linked pair's effective normal stress at this step (before any return), returned, and its
-// tangential stress after this step's slide, stored in v (turn: null, the pair does not turn)
+// a linked pair's trial stresses (McaLinkedPair::trial) with its many-body part
 double PairMCA::trial_stresses(int i, int j, double *v, const McaPairFrame &p, const C::Turn *turn,
                                double *dut)
 {
-  const double ai = stiffness[i], aj = stiffness[j], a = C::series(ai, aj);
-  double sigma = McaLinkedPair::elastic_stress(v, a, p.r);
-  if (setting.manybody) sigma += manybody.pair_stress(i, j, ai, aj);
-  C::slide(v + C::TAU, v + C::DPREV, p.d, p.n, turn, a, dut, v + C::ET);
-  return sigma;
-}
-
-// a linked pair's load from its elements' pressure (mca_element_eos.h): their force on i with
-// its hourglass spring's (spring: both elements have the shock law), and their mean stress;
-// the spring: the elongation beyond the
-// elements' displacement gradients (a dynamics step adds the pair's own in the pass of the
-// volumes and takes the affine part off here) pulls with the stiffness of
-// 2 H (K + 4G/3 + 2 |p|) / R per half, p the elements' pressure (the softening it resists
-// grows with it); returns the spring's effective energy
-double PairMCA::pressure_forces(int i, int j, double *v, const McaPairFrame &p, bool spring,
-                                McaPressureLoad &load)
-{
-  double *force = load.f;
-  eos.pair_force(i, j, p.d, v[C::AREA] / v[C::REF], force);
-  load.stress = eos.pair_stress(i, j);
-  load.kinetic = eos.kinetic(atom->type[i]) || eos.kinetic(atom->type[j]);
-  load.spalled = load.kinetic && eos.spalled(i, j);
-  double affine;
-  if (!spring || !eos.affine_elongation(i, j, p.n, p.r, affine)) {
-    McaHourglassSpring::clear(v);    // a linear-law element, or neither has a volume
-    return 0.0;
-  }
-  if (elements_turn()) v[C::HG] -= affine;
-  const double squeeze = fabs(load.stress), bi = hourglass[i][0] + hourglass[i][1] * squeeze,
-               bj = hourglass[j][0] + hourglass[j][1] * squeeze;
-  double energy;
-  const double pull = McaHourglassSpring::pull(v, bi, bj, elements_turn(), energy);
-  for (int k = 0; k < 3; k++) force[k] += pull * p.n[k];
-  return energy;
+  const double ai = stiffness.half(i), aj = stiffness.half(j);
+  return McaLinkedPair::trial(v, C::series(ai, aj), p,
+                              setting.manybody ? manybody.pair_stress(i, j, ai, aj) : 0.0, turn, dut);
 }
 
 // a setup re-evaluates the same positions; a minimizer does not turn the elements
@@ -511,6 +445,6 @@ void PairMCA::write_data_all(FILE *fp)
 
 double PairMCA::memory_usage()
 {
-  return 3.0 * nmax * sizeof(double) + manybody.memory_usage() + stress.memory_usage() +
+  return stiffness.memory_usage() + manybody.memory_usage() + stress.memory_usage() +
       plasticity.memory_usage() + eos.memory_usage();
 }

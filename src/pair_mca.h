@@ -9,9 +9,11 @@
    (mca_type_table.h, mca_pair_model.h), the linked pair's law
    (mca_linked_pair.h), the unlinked contact (mca_unlinked_pair.h), the
    many-body term (mca_manybody.h), plasticity (mca_plasticity.h), the
-   element stresses (mca_element_stress.h) and the persistent pair state
-   (pair_state.h); it keeps the LAMMPS interface and the passes over the
-   neighbour list (mca_pair_walk.h).  Formulas, units and limits:
+   element stresses (mca_element_stress.h), stiffnesses
+   (mca_element_stiffness.h) and pressure (mca_element_eos.h,
+   mca_pressure_pair.h) and the persistent pair state (pair_state.h); it
+   keeps the LAMMPS interface and the passes over the neighbour list
+   (mca_pair_walk.h).  Formulas, units and limits:
    doc/pair_mca.rst; the layout: doc/Developer.rst.
 ------------------------------------------------------------------------- */
 
@@ -25,12 +27,13 @@ PairStyle(mca,PairMCA);
 #define LMP_CLUSTERDYN_PAIR_MCA_H
 
 #include "mca_element_eos.h"
+#include "mca_element_stiffness.h"
 #include "mca_element_stress.h"
 #include "mca_guard.h"
 #include "mca_linking.h"
-#include "mca_pair_tally.h"
 #include "mca_manybody.h"
 #include "mca_material_report.h"
+#include "mca_pair_tally.h"
 #include "mca_pair_walk.h"
 #include "mca_plasticity.h"
 #include "mca_segment_contact.h"
@@ -89,19 +92,16 @@ namespace ClusterDyn {
     McaManybody manybody;
     McaElementStress stress;
     McaElementEos eos;                    // the pressure of elements with a shock law
+    McaElementStiffness stiffness;        // a_i, and the hourglass springs' b_i
     PairState state;
     bool tracks_changes;                  // the many-body term follows breaking, damage, flow
     McaLinking linking;
     McaSegmentContact segments;           // two bodies' contact by the method of segments (2d)
     McaMaterialReport report;             // the materials' derived numbers in the log
     NeighList *full;                      // its full list (id 1)
-    double *stiffness;                    // per atom: the half stiffness a_i = 2 G_i / R_i
-    double **hourglass;                   // and of its hourglass spring: 2 H (K + 4G/3) / R_i,
-                                          // and 4 H / R_i per unit pressure
-    int nmax;
 
     void allocate();
-    void grow(int nall);
+    void grow();
     void volumetric_strain(const StatePass &);
     void plastic_trial(const StatePass &);
     void pair_forces(const StatePass &, StateTally &);
@@ -109,8 +109,6 @@ namespace ClusterDyn {
                           const McaContact::Turn *turn,
                           double *dut = nullptr);
     bool elements_turn() const;
-    double pressure_forces(int i, int j, double *v, const McaPairFrame &p, bool spring,
-                           McaPressureLoad &load);
   };
 
 }    // namespace ClusterDyn

@@ -4,8 +4,9 @@ potentials/al.shock and cu.shock, read by card()), four ways side by side on the
 flyer of 10 fcc cells of 14.14 um on a target of 20, 5 x 5 cells across, elements or particles
 of the same volume):
   mca    movable cellular automata with the shock equation of state (in.plate, with the
-         links' strength as the fracture, `-var fracture threshold`: the elements' spall
-         kinetics, in.plate's default, is spall_rate.py's);
+         links' strength as the fracture, `-var fracture threshold`, elements of 10 um);
+  mca5k  the same elements as in.plate runs them by default: 5 um, the spall kinetics (the
+         card's rate law; spall_rate.py's, at the converged resolution of converge.py);
   tlsph  LAMMPS's smd/tlsph: *EOS_SHOCK, *STRENGTH_LINEAR_PLASTIC and the pairwise-strain
          failure at sigma_sp / (K + 4G/3) (in.tlsph, one body as in.plate, sides held);
   peri   LAMMPS's peri/lps with the metal's K, G, density and critical stretch
@@ -13,14 +14,14 @@ of the same volume):
   cd     cluster dynamics with the calibrated clusters of potentials/ (../spall/in.spall).
 For each: the shock speed in the target (x-t records) against c0 + s up, the free-surface
 peak, the pull-back and the spall strength read from it by tools/pull_back.py, Kanel's
-sigma_sp = 1/2 rho0 c_b (dU + delta) (mca and tlsph, elastic-plastic: c_b the bulk c0, c_l =
-sqrt((K + 4G/3)/rho0), h the flyer's thickness; peri, elastic: one speed c_L; cd, the
+sigma_sp = 1/2 rho0 c_b (dU + delta) (mca, mca5k and tlsph, elastic-plastic: c_b the bulk c0,
+c_l = sqrt((K + 4G/3)/rho0), h the flyer's thickness; peri, elastic: one speed c_L; cd, the
 clusters: one speed, their c0, delta = 0),
 whether and where it spalled, and the cost per particle-step (LAMMPS's timing breakdown).
 And the Hugoniot of the elements (in.piston: us at up = 0.2-2 km/s, the energy they hold
 against the piston's work) with the elastic precursor at up = 100 m/s.  Writes
 comparison.md and shock.png; runs in runs/ (a finished run is read again: delete its folder
-to run it again).  About 15 minutes on one core.
+to run it again).  About 20 minutes on one core.
 
     source ../../build/env.sh; /usr/bin/python3 run_shock.py
 """
@@ -63,6 +64,7 @@ for m in METALS.values():
     nu = (3 * m["K"] - 2 * m["G"]) / (2 * (3 * m["K"] + m["G"]))
     m["hel"] = m["Y"] * (1 - nu) / (1 - 2 * nu)
 METHODS = {"mca": "movable cellular automata, shock EOS (pair mca)",
+           "mca5k": "the same, 5 um elements and the spall kinetics (in.plate's defaults)",
            "tlsph": "smd/tlsph, EOS_SHOCK + linear plastic + pairwise failure",
            "peri": "peri/lps, linear elastic",
            "cd": "cluster dynamics (calibrated clusters)"}
@@ -79,6 +81,8 @@ def inputs(method, metal, v):
     if method == "mca":
         return os.path.join(HERE, "in.plate"), {"metal": metal, "v": v, "here": HERE + "/",
                                                 "fracture": "threshold", "d": 1.0e-5}
+    if method == "mca5k":
+        return os.path.join(HERE, "in.plate"), {"metal": metal, "v": v, "here": HERE + "/"}
     if method == "tlsph":
         return os.path.join(HERE, "in.tlsph"), {"metal": metal, "v": v, "failure": "pairwise",
                                                 "bodies": 1}
@@ -167,7 +171,7 @@ def speeds(method, metal):
     and tlsph has both (Kanel's correction); peri's linear elastic target one, c_L; the
     clusters one, their c0 (a metal-calibrated set's elastic and shock waves are one)."""
     m = METALS[metal]
-    if method in ("mca", "tlsph"):
+    if method in ("mca", "mca5k", "tlsph"):
         return m["cL"], m["c0"]
     return (m["cL"], m["cL"]) if method == "peri" else (m["c0"], m["c0"])
 
@@ -339,15 +343,16 @@ def main():
                       "spall, depth below the rear face", "Pair us per particle-step",
                       "loop us per particle-step"], rows)]
     report += ["", "The pull-back sigma_sp by tools/pull_back.py: 1/2 rho0 c_b (dU + delta) with "
-               "Kanel's correction for mca and tlsph (elastic-plastic: c_b the bulk c0, c_l = "
-               "sqrt((K + 4G/3)/rho0), h the flyer's thickness), 1/2 rho0 c_L dU for peri "
+               "Kanel's correction for mca, mca5k and tlsph (elastic-plastic: c_b the bulk c0, "
+               "c_l = sqrt((K + 4G/3)/rho0), h the flyer's thickness), 1/2 rho0 c_L dU for peri "
                "(linear elastic: one speed) and 1/2 rho0 c0 dU for cd (the clusters: one speed, "
                "their c0); the records smoothed over a tenth of the pulse 2 H / c_b." + "".join(
                    f"  No spall pulse front after the minimum (u2' unknown, delta taken 0: a "
                    f"lower bound): {', '.join(lacking)}." for lacking in [[
                        f"{METALS[metal]['name']} {method} at {v} m/s"
                        for (method, metal, v), r in runs.items()
-                       if method in ("mca", "tlsph") and r.get("strength") and not r["delta"]]]
+                       if method in ("mca", "mca5k", "tlsph") and r.get("strength")
+                       and not r["delta"]]]
                    if lacking)]
     cost = {method: np.mean([1e6 * r["pair"] / (r["atoms"] * r["steps"])
                              for (a, _, _), r in runs.items() if a == method])

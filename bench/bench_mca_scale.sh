@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# The cost and the memory of pair_style mca with the shock law against the plate's width: the
+# plate of examples/mca-shock/in.plate (aluminium at 400 m/s, 10 um elements, no records) with
+# CELLS x CELLS fcc cells across (5: 3,050 elements ... 50: 305,000), a short run of STEPS steps
+# from the impact on one rank (and on 2 ranks for the widest).  Prints per width: the elements,
+# the neighbours per element (LAMMPS's count, half list), LAMMPS's Pair and Neigh time per
+# element-step (timing breakdown) and its memory report per element (the ranks' sum).
+#   bash bench/bench_mca_scale.sh [BUILD] [STEPS] [CELLS...]    (BUILD: a folder with env.sh)
+set -euo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
+examples=$(cd "$here/../examples" && pwd)
+build=$(cd "${1:-$here/../build}" && pwd) steps=${2:-200}
+shift $(( $# > 2 ? 2 : $# ))
+widths=("$@")
+[ ${#widths[@]} -gt 0 ] || widths=(5 10 20 32 50)
+work=$(mktemp -d)
+cd "$work"
+# in.plate with a run of $steps steps
+sed "s/^variable     steps equal .*/variable     steps equal $steps/" "$examples/mca-shock/in.plate" \
+  > in.plate
+one() {  # ranks cells
+  local ranks=$1 cells=$2
+  (source "$build/env.sh"; OMP_NUM_THREADS=1 mpirun -np "$ranks" --oversubscribe lmp \
+    -in in.plate -log none -nocite -var metal al -var v 400 -var d 1e-5 -var records 0 \
+    -var cells "$cells" -var here "$examples/mca-shock/") | awk -v ranks="$ranks" -v cells="$cells" '
+    /Per MPI rank memory allocation/ {mem = $(NF - 1)}
+    /^Loop time of/ {steps = $9; atoms = $12}
+    $1 == "Pair" && $2 == "|" {pair = $5}
+    $1 == "Neigh" && $2 == "|" {neigh = $5}
+    /^Ave neighs\/atom/ {nb = $4}
+    END {
+      printf "%2d ranks %3d cells: %7d elements, %5.1f neighbours each; Pair %.3f us, Neigh %.3f us per element-step; memory %.2f kB per element\n",
+        ranks, cells, atoms, nb, 1e6 * pair / (atoms * steps), 1e6 * neigh / (atoms * steps),
+        mem * ranks * 1048.576 / atoms}'
+}
+for c in "${widths[@]}"; do one 1 "$c"; done
+one 2 "${widths[-1]}"
