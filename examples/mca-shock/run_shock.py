@@ -359,7 +359,9 @@ def main():
             for method in METHODS}
     report += ["", "Cost per particle-step (Pair, mean of the runs): " + ", ".join(
         f"{method} {cost[method]:.2f} us" for method in METHODS) +
-        f"; mca / tlsph = {cost['mca'] / cost['tlsph']:.2f}.", ""]
+        f"; mca / tlsph = {cost['mca'] / cost['tlsph']:.2f} (LAMMPS's timings of these runs, "
+        "on whatever else the machine ran: the side-by-side comparison on a quiet machine is "
+        "bench/bench_shock_cost.sh's, doc/benchmarks/bench_mca.md).", ""]
     with open(os.path.join(HERE, "comparison.md"), "w") as f:
         f.write("\n".join(report))
     plot(runs, pistons)

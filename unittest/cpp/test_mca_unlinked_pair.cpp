@@ -159,3 +159,29 @@ TEST(McaUnlinkedPair, AnOpenContactKeepsABrokenLinksDistanceOnlyWhileCloserThanT
   v[C::REF] = 0.0;    // a contact of the elements' radii keeps nothing open
   EXPECT_EQ(McaUnlinkedPair::open(kept, v, 0.95 * 0.95, d, ri + rj), 0);
 }
+
+TEST(McaUnlinkedPair, AContactLeftPressedTakesItsEnergyFromTheBreak)
+{
+  // a link of r_ref 0.97 with e_p 0.01 breaks at r = 0.975 (its own elongation compressive,
+  // the many-body term pulling): the contact closes at 0.98 and is pressed by 0.005
+  const double ri = 0.5, rj = 0.5, a = 10.0;
+  double v[C::NVALUES] = {};
+  v[C::REF] = 0.97;
+  v[C::EPL] = 0.01;
+  StateTally changes;
+  changes.ejump = 1.0;    // what the link's own energy released
+  const McaPairTally tally{changes, 0.5, nullptr, 0, 1, 20.0, 20.0, false, nullptr};
+  const McaPairFrame p = frame(0.975, ri, rj);
+  const int word = McaUnlinkedPair::left_by_break(state_word(1, 0, 0), v, p, ri, rj, a, 3, tally);
+  EXPECT_TRUE(word & WORD_KEPT);
+  const McaUnlinkedPair left(ri, rj, 0.98, a, 0.975, 3);
+  EXPECT_NEAR(changes.ejump, 1.0 - 0.5 * 0.5 * left.area * a * 0.005 * 0.005, 1e-15);
+  // apart from its contact distance a break leaves nothing to take
+  double w[C::NVALUES] = {};
+  w[C::REF] = 0.97;
+  StateTally apart;
+  const McaPairTally tally_apart{apart, 1.0, nullptr, 0, 1, 20.0, 20.0, true, nullptr};
+  McaUnlinkedPair::left_by_break(state_word(1, 0, 0), w, frame(0.975, ri, rj), ri, rj, a, 3,
+                                 tally_apart);
+  EXPECT_EQ(apart.ejump, 0.0);
+}

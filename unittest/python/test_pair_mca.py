@@ -672,8 +672,9 @@ def test_two_materials_of_equal_strength_take_the_one_that_unlinks_first_in_eith
 
 def test_a_link_broken_in_overlap_leaves_no_repulsion():
     """A dimer linked stress free at 0.97 d, stretched until the link breaks at 0.974 d: no
-    force remains between the elements (their contact closes at the link's stress-free
-    distance, not at R_i + R_j: before 28 Nov 2026 it pushed them apart with 0.007)."""
+    force remains between the elements, neither a push nor a pull (their contact closes at
+    the link's stress-free distance, not at R_i + R_j, and is open beyond it: before 28 Nov
+    2026 it pushed them apart with 0.007)."""
     with session() as lmp:
         lmp.commands_list([
             "units lj", "atom_style sphere", "atom_modify map array", "boundary f f f",
@@ -685,7 +686,7 @@ def test_a_link_broken_in_overlap_leaves_no_repulsion():
             "group two id 2", "displace_atoms two move 0.0038 0 0", "run 0 post no",
             "displace_atoms two move 0.0004 0 0", "run 0 post no", "run 0 post no"])
         fx = lmp.numpy.extract_atom("f")[0, 0]
-    assert fx >= 0.0
+    assert fx == 0.0
 
 
 # ---------------------------------------------------------------- hostile input
