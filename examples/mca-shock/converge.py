@@ -103,16 +103,18 @@ def spall_depth(xt, d):
     return float(x[filled.max()] - np.mean(x[inside])) * 1e6 if inside else None
 
 
-def peer(folder, v):
-    """The readings of a peer code's record folder/al<v>.visar, or None."""
-    path = os.path.join(folder, f"al{v}.visar")
+def peer(folder, v, metal="al"):
+    """The readings of a peer code's record folder/<metal><v>.visar (resampled at 0.2 ns: pyKO
+    writes every step) with its times t and velocities u, or None."""
+    path = os.path.join(folder, f"{metal}{v}.visar") if folder else ""
     if not os.path.exists(path):
         return None
     data = np.loadtxt(path)
     keep_rows = np.concatenate([[True], np.diff(data[:, 0]) > 0])
     t, u = data[keep_rows, 0], data[keep_rows, 1]
-    grid = np.arange(t[0], t[-1], 0.2e-9)        # pyKO writes every step: resample at 0.2 ns
-    return dict(readings(grid, np.interp(grid, t, u), v), depth=None, loop=None, atoms=None)
+    grid = np.arange(t[0], t[-1], 0.2e-9)
+    return dict(readings(grid, np.interp(grid, t, u), v, METALS[metal]), t=t, u=u, depth=None,
+                loop=None, atoms=None)
 
 
 def fmt(x, spec):

@@ -25,7 +25,7 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.dirname(HERE))
 sys.path.insert(0, HERE)
-from converge import FLYER_UM, TARGET_UM, readings  # noqa: E402
+from converge import FLYER_UM, TARGET_UM, peer, readings  # noqa: E402
 from run_shock import METALS, time_step  # noqa: E402
 from shock_records import XT  # noqa: E402
 from runner import keep, lmp_command, loops, mean_sd, parallel, table  # noqa: E402
@@ -106,19 +106,6 @@ def study(metal):
     return dict(threshold=vth, below=below, runs=runs, pressure=pressure)
 
 
-def peer(folder, metal, v):
-    """The readings of a peer code's record folder/<metal><v>.visar (resampled at 0.2 ns), or
-    None."""
-    path = os.path.join(folder, f"{metal}{v}.visar") if folder else ""
-    if not os.path.exists(path):
-        return None
-    data = np.loadtxt(path)
-    rows = np.concatenate([[True], np.diff(data[:, 0]) > 0])
-    t, u = data[rows, 0], data[rows, 1]
-    grid = np.arange(t[0], t[-1], 0.2e-9)
-    return dict(readings(grid, np.interp(grid, t, u), v, METALS[metal]), t=t, u=u)
-
-
 def main():
     ap = argparse.ArgumentParser(description=__doc__.strip().split("\n")[0])
     ap.add_argument("--jobs", type=int, default=2)
@@ -171,7 +158,7 @@ def one_fracture(studies, pyko):
     for metal, st in studies.items():
         m = METALS[metal]
         for v, r in st["pressure"].items():
-            ref = peer(pyko, metal, v)
+            ref = peer(pyko, v, metal)
             rows.append([m["name"], v, "yes" if r["spalled"] else "no", fmt(r["kanel"], ".3f"),
                          fmt(r["kanel"] and r["kanel"] * 1e9 / m["spall"], ".3f"),
                          fmt(ref and ref["kanel"], ".3f"),
@@ -223,7 +210,7 @@ def plot(studies, pyko):
         for k, v in enumerate(studies[metal]["runs"]):
             record = np.loadtxt(os.path.join(RUNS, f"{metal}-{v}-0", "run.visar"))
             bx.plot(record[:, 1] * 1e9, record[:, 2], color=f"C{k}", lw=1, label=f"{v} m/s")
-            ref = peer(pyko, metal, v)
+            ref = peer(pyko, v, metal)
             if ref:
                 bx.plot(ref["t"] * 1e9, ref["u"], ":", color=f"C{k}", lw=1)
         if pyko:
