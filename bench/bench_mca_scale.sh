@@ -4,7 +4,9 @@
 # CELLS x CELLS fcc cells across (5: 3,050 elements ... 50: 305,000), a short run of STEPS steps
 # from the impact on one rank (and on 2 ranks for the widest).  Prints per width: the elements,
 # the neighbours per element (LAMMPS's count, half list), LAMMPS's Pair and Neigh time per
-# element-step (timing breakdown) and its memory report per element (the ranks' sum).
+# element-step (timing breakdown), its memory report per element (the ranks' sum), and the
+# energy (ke + pe + rotation) and the links broken at the last step (the widest plate on 1 and
+# 2 ranks: the same result).
 #   bash bench/bench_mca_scale.sh [BUILD] [STEPS] [CELLS...]    (BUILD: a folder with env.sh)
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
@@ -28,10 +30,13 @@ one() {  # ranks cells
     $1 == "Pair" && $2 == "|" {pair = $5}
     $1 == "Neigh" && $2 == "|" {neigh = $5}
     /^Ave neighs\/atom/ {nb = $4}
+    /^ *Step / {thermo = 1; next}
+    thermo && /^Loop time/ {thermo = 0}
+    thermo && $1 ~ /^[0-9]+$/ {energy = $6; broken = $7}
     END {
-      printf "%2d ranks %3d cells: %7d elements, %5.1f neighbours each; Pair %.3f us, Neigh %.3f us per element-step; memory %.2f kB per element\n",
+      printf "%2d ranks %3d cells: %7d elements, %5.1f neighbours each; Pair %.3f us, Neigh %.3f us per element-step; memory %.2f kB per element; energy %s J, %s links broken\n",
         ranks, cells, atoms, nb, 1e6 * pair / (atoms * steps), 1e6 * neigh / (atoms * steps),
-        mem * ranks * 1048.576 / atoms}'
+        mem * ranks * 1048.576 / atoms, energy, broken}'
 }
 for c in "${widths[@]}"; do one 1 "$c"; done
 one 2 "${widths[-1]}"

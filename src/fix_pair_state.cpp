@@ -13,11 +13,13 @@
 #include "memory.h"
 #include "my_page.h"
 #include "neigh_list.h"
+#include "neighbor.h"
 #include "pair.h"
 #include "update.h"
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <unordered_map>
 #include <unordered_set>
 #include <vector>
@@ -26,7 +28,8 @@ using namespace LAMMPS_NS;
 using namespace ClusterDyn;
 
 FixPairState::FixPairState(LAMMPS *lmp, int narg, char **arg) :
-    FixNeighHistory(lmp, narg, arg), owner(nullptr), saved_id(nullptr), nds_current(0)
+    FixNeighHistory(lmp, narg, arg), owner(nullptr), saved_id(nullptr), nds_current(0),
+    nstate(nullptr), maxstate(0)
 {
   comm_forward = 1;
   memory->create(saved_id, atom->nmax, "pair_state:saved_id");
@@ -36,6 +39,7 @@ FixPairState::FixPairState(LAMMPS *lmp, int narg, char **arg) :
 FixPairState::~FixPairState()
 {
   memory->destroy(saved_id);
+  memory->destroy(nstate);
 }
 
 int FixPairState::setmask()
@@ -119,15 +123,80 @@ void FixPairState::write_restart(FILE *fp)
 void FixPairState::post_neighbor()
 {
   if (update->setupflag) relabel_partners();
-  FixNeighHistory::post_neighbor();
-  const NeighList *list = pair->list;
-  for (int ii = 0; ii < list->inum; ii++) {
-    const int i = list->ilist[ii];
-    for (int jj = 0; jj < list->numneigh[i]; jj++)
-      if (firstflag[i][jj]) firstflag[i][jj] = word_of(firstvalue[i] + dnum * jj, dnum);
-  }
+  restore();
   nds_current = 1;
   check_lost_links();
+}
+
+// FixNeighHistory::post_neighbor() (its pair style keeps every listed pair, beyond_contact),
+// with each atom's list sorted: the pairs that keep doubles first, in their order, then the
+// rest in theirs (a pass over the first ones sums as one over all did)
+void FixPairState::restore()
+{
+  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
+  nlocal_neigh = nlocal;
+  nall_neigh = nall;
+  if (maxatom < nlocal) {
+    memory->sfree(firstflag);
+    memory->sfree(firstvalue);
+    maxatom = nall;
+    firstflag = (int **) memory->smalloc(maxatom * sizeof(int *), "neighbor_history:firstflag");
+    firstvalue =
+        (double **) memory->smalloc(maxatom * sizeof(double *), "neighbor_history:firstvalue");
+  }
+  if (maxstate < nlocal) {
+    maxstate = nall;
+    memory->destroy(nstate);
+    memory->create(nstate, maxstate, "pair_state:nstate");
+  }
+  ipage_neigh->reset();
+  dpage_neigh->reset();
+
+  const tagint *tag = atom->tag;
+  const bool all = reach.empty();
+  const int *type = atom->type;
+  double *const *x = atom->x;
+  const double skin = neighbor->skin;
+  NeighList *list = pair->list;
+  std::vector<int> kept, found, rest;    // the list's entries that keep doubles, their partner
+  for (int ii = 0; ii < list->inum; ii++) {
+    const int i = list->ilist[ii];
+    int *jlist = list->firstneigh[i];
+    const int jnum = list->numneigh[i];
+    kept.clear();
+    found.clear();
+    rest.clear();
+    for (int jj = 0; jj < jnum; jj++) {
+      const int j = jlist[jj] & HISTMASK;    // the history bit of a size list means nothing here
+      const int jn = j & NEIGHMASK;
+      int m = 0;
+      while (m < npartner[i] && partner[i][m] != tag[jn]) m++;
+      bool near = m < npartner[i] || all;
+      if (!near) {
+        const double dx = x[jn][0] - x[i][0], dy = x[jn][1] - x[i][1], dz = x[jn][2] - x[i][2];
+        const double far = reach[type[i]] + reach[type[jn]] + skin;
+        near = dx * dx + dy * dy + dz * dz < far * far;
+      }
+      if (near) {
+        kept.push_back(j);
+        found.push_back(m);
+      } else rest.push_back(j);
+    }
+    const int nkept = kept.size();
+    std::copy(kept.begin(), kept.end(), jlist);
+    std::copy(rest.begin(), rest.end(), jlist + nkept);
+    nstate[i] = nkept;
+    int *flags = firstflag[i] = ipage_neigh->get(jnum);
+    double *values = firstvalue[i] = dpage_neigh->get(nkept * dnum);
+    for (int jj = 0; jj < jnum; jj++) flags[jj] = 0;
+    for (int jj = 0; jj < nkept; jj++) {
+      double *v = values + dnum * jj;
+      if (found[jj] < npartner[i]) {
+        memcpy(v, valuepartner[i] + dnum * found[jj], dnumbytes);
+        flags[jj] = word_of(v, dnum);
+      } else memcpy(v, zeroes, dnumbytes);
+    }
+  }
 }
 
 void FixPairState::forget()
@@ -333,5 +402,6 @@ void FixPairState::unpack_forward_comm(int n, int first, double *buf)
 
 double FixPairState::memory_usage()
 {
-  return FixNeighHistory::memory_usage() + (double) atom->nmax * sizeof(tagint);
+  return FixNeighHistory::memory_usage() + (double) atom->nmax * sizeof(tagint) +
+      (double) maxstate * sizeof(int);
 }

@@ -24,7 +24,13 @@
    - in a minimization the owner settles tentative changes before a save;
    - a pair's whole state word (linked, or an unlinked pair that keeps its
      doubles) is saved in the last of its dnum doubles and restored from it
-     (the base class restores every saved pair as flag 1).
+     (the base class restores every saved pair as flag 1);
+   - where the owner names a reach (keep_state_within), a list build puts
+     first in each atom's list the pairs that keep doubles: those with a
+     saved state and those closer than the types' reaches plus the skin, which
+     may touch before the next build (as the list's own cutoff plus skin
+     holds every pair that may interact); the pairs beyond keep a word (0)
+     and no doubles, and the pair style's passes skip them.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_CLUSTERDYN_FIX_PAIR_STATE_H
@@ -33,6 +39,7 @@
 #include "fix_neigh_history.h"
 
 #include <string>
+#include <vector>
 
 namespace LAMMPS_NS {
 namespace ClusterDyn {
@@ -69,12 +76,21 @@ namespace ClusterDyn {
     const tagint *forward_saved_ids();    // saved IDs of my atoms and ghosts (0 = fresh)
     bigint count_saved_links();           // links in the atoms' partner arrays, all processors
     void forget();                        // every atom fresh, no partner (a re-issued style)
+    // pairs farther apart than reach[type_i] + reach[type_j] + skin at a list build keep no
+    // doubles until the next build (empty: every listed pair keeps them)
+    void keep_state_within(const std::vector<double> &per_type) { reach = per_type; }
+    // per atom of the list: how many of its first listed pairs keep doubles
+    const int *state_counts() const { return nstate; }
 
    private:
     tagint *saved_id;           // per atom: its ID when its partners were saved; 0 = fresh
     int nds_current;            // the neighbour data describe the current atoms
+    std::vector<double> reach;    // keep_state_within()
+    int *nstate;                // state_counts(), maxstate of them
+    int maxstate;
     void save();
     void relabel_partners();    // IDs changed since the save: partners follow
+    void restore();             // the saved states into the new list (FixNeighHistory's, sorted)
     void check_lost_links();
   };
 

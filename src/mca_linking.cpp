@@ -43,7 +43,7 @@ void McaLinking::make(const NeighList *list, const StatePass &pass, const McaTyp
   }
   for (int i = 0; i < nall; i++) zcount[i][0] = 0.0;
 
-  walk_pairs(list, [&](int i, int j, int jj) {
+  walk_pairs(list, pass, [&](int i, int j, int jj) {
     int &word = pass.words[i][jj];
     if (!pass.fresh[i] || !pass.fresh[j]) {
       double *v = pass.pair_values(i, jj);
@@ -76,7 +76,7 @@ void McaLinking::make(const NeighList *list, const StatePass &pass, const McaTyp
 void McaLinking::areas(const NeighList *list, const StatePass &pass, double fraction)
 {
   const double *radius = atom->radius;
-  walk_pairs(list, [&](int i, int j, int jj) {
+  walk_pairs(list, pass, [&](int i, int j, int jj) {
     double *v = pass.pair_values(i, jj);
     if (!state_now(pass.words[i][jj]) || v[C::AREA] != 0.0) return;
     const int dim = domain->dimension;

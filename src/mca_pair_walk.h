@@ -11,6 +11,7 @@
 #define LMP_CLUSTERDYN_MCA_PAIR_WALK_H
 
 #include "mca_contact.h"
+#include "pair_state.h"
 
 #include "atom.h"
 #include "error.h"
@@ -24,13 +25,15 @@
 namespace LAMMPS_NS {
 namespace ClusterDyn {
 
-  // visit(i, j, jj) for every pair of the list, jj the pair's place in i's list (its state)
-  template <class Visit> void walk_pairs(const NeighList *list, Visit &&visit)
+  // visit(i, j, jj) for every pair of the list that keeps a state (PairState: the first
+  // pass.counts[i] of i's list; the rest are too far apart to link or touch before the next
+  // list build), jj the pair's place in i's list (its state)
+  template <class Visit> void walk_pairs(const NeighList *list, const StatePass &pass, Visit &&visit)
   {
     for (int ii = 0; ii < list->inum; ii++) {
       const int i = list->ilist[ii];
       const int *jlist = list->firstneigh[i];
-      for (int jj = 0; jj < list->numneigh[i]; jj++) visit(i, jlist[jj] & NEIGHMASK, jj);
+      for (int jj = 0; jj < pass.counts[i]; jj++) visit(i, jlist[jj] & NEIGHMASK, jj);
     }
   }
 

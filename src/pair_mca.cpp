@@ -114,7 +114,7 @@ void PairMCA::volumetric_strain(const StatePass &pass)
   const bool pressure = eos.active(), moving = elements_turn();
   manybody.begin_strain(nlocal + atom->nghost);
   if (pressure) eos.begin(nlocal + atom->nghost);
-  walk_pairs(list, [&](int i, int j, int jj) {
+  walk_pairs(list, pass, [&](int i, int j, int jj) {
     if (!state_now(pass.words[i][jj])) return;
     double *v = pass.pair_values(i, jj);
     const McaPairFrame p(atom->x, i, j);
@@ -159,7 +159,7 @@ void PairMCA::plastic_trial(const StatePass &pass)
   const double dt = update->dt;
   stress.zero(nlocal + atom->nghost);
 
-  walk_pairs(list, [&](int i, int j, int jj) {
+  walk_pairs(list, pass, [&](int i, int j, int jj) {
     if (!state_now(pass.words[i][jj])) return;
     double *v = pass.pair_values(i, jj);
     McaPairFrame p(atom->x, i, j);
@@ -204,7 +204,7 @@ void PairMCA::pair_forces(const StatePass &pass, StateTally &changes)
   if (tracks_changes) manybody.begin_changes(nall);
   if (eos.active()) eos.begin_heat(nall);
 
-  walk_pairs(list, [&](int i, int j, int jj) {
+  walk_pairs(list, pass, [&](int i, int j, int jj) {
     const double ri = radius[i], rj = radius[j];
     McaPairFrame p(atom->x, i, j);
     int &word = pass.words[i][jj];
@@ -358,6 +358,13 @@ void PairMCA::init_style()
   state.explain_lost_links([this] { return eos.lost_links_reason(); });
   neighbor->add_request(this, NeighConst::REQ_HISTORY);
   if (segments.active()) neighbor->add_request(this, NeighConst::REQ_FULL)->set_id(1);
+  // elements link (at a setup) within (1 + T)(R_i + R_j) and touch within R_i + R_j or where a
+  // broken link left them (a pair that keeps its state), R no larger than the largest of the
+  // type at init (the guard): the pairs farther apart keep none until the next list build
+  std::vector<double> reach(atom->ntypes + 1, 0.0);
+  for (int t = 1; t <= atom->ntypes; t++)
+    reach[t] = (1.0 + setting.tolerance) * guard.largest_radius(t);
+  state.keep_state_within(reach);
   state.init();
 }
 

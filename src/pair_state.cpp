@@ -118,6 +118,7 @@ void PairState::init()
     afresh = 0;
   }
   check_fix();
+  fix->keep_state_within(reach);
   check_neighbours();
   consolidate();
 }
@@ -160,6 +161,7 @@ StatePass PairState::begin()
   pass.words = fix->firstflag;
   pass.values = fix->firstvalue;
   pass.fresh = update->setupflag ? fix->forward_saved_ids() : nullptr;
+  pass.counts = fix->state_counts();
   pass.trial = trial_now;
   pass.stride = nvalues + 1;
   return pass;

@@ -30,6 +30,7 @@
 #include <cstdio>
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace LAMMPS_NS {
 class NeighList;
@@ -81,6 +82,7 @@ namespace ClusterDyn {
     int *const *words;          // per neighbour pair of the pair style's list
     double *const *values;      // stride doubles per neighbour pair, nvalues of them the owner's
     const tagint *fresh;        // at a setup: per atom (own and ghost), 0 = fresh; else null
+    const int *counts;          // per atom of the list: its first pairs that keep doubles
     int trial;                  // a minimizer's trial point: see state_word()
     int stride;
     double *pair_values(int i, int jj) const { return values[i] + stride * jj; }
@@ -103,6 +105,10 @@ namespace ClusterDyn {
     static constexpr const char *FIX_ID = "NEIGH_HISTORY_LINK";
     void enable();             // pair_style: a placeholder fix; again: the state starts afresh
     bool on() const { return enabled; }
+    // pairs farther apart than reach[type_i] + reach[type_j] plus the neighbor skin at a list
+    // build keep no doubles and word 0 until the next build: the owner's pairs of those types
+    // never link or touch farther apart; empty (the default): every listed pair keeps them
+    void keep_state_within(std::vector<double> per_type) { reach = std::move(per_type); }
     void init();               // init_style(): the fix replaces its placeholder
     StatePass begin();         // start of compute()
     void end(const StateTally &pass, double *tally_out);    // tally_out: 3 + nwork (pvector)
@@ -137,6 +143,7 @@ namespace ClusterDyn {
     std::string name;          // the pair style, for messages
     std::function<std::string()> lost_links;    // explain_lost_links()
     int nvalues, nwork;
+    std::vector<double> reach;    // keep_state_within()
     int enabled, made_flag;
     int afresh;                // re-issued before the fix was made: forget restored links
     FixPairState *fix;         // null until the first init

@@ -778,3 +778,34 @@ def test_two_sizes_link_at_their_own_pair_cutoff(units, scale, first):
                            "run 0 post no"])
         f = lmp.numpy.extract_atom("f")[:n]
         assert f[1, 0] < 0.0 < f[0, 0]           # the link pulls them together
+
+
+@pytest.mark.parametrize("units", ["lj", "si"])
+def test_elements_beyond_the_state_reach_at_a_build_touch_before_the_next(units):
+    """A pair farther apart than (1 + T)(R_i + R_j) plus the skin at a list build keeps no state
+    until the next build (each element moves less than half the skin in between, so the pair
+    closes by less than the skin): two unlinked elements launched at each other from 1.5 d,
+    listed far at the builds on their way, meet as a frictionless contact (the closed form's
+    stiffness S_u a, S_u = sqrt(2) R^2, a = G / R): they bounce back with their speeds and the
+    kinetic energy within 1e-4, where a contact felt a build late would give energy (the overlap
+    it finds) or let them pass."""
+    radius, g = SCALE[units]
+    d = 2.0 * radius
+    with session() as lmp:
+        dimer(lmp, units, radius, (2.5 * g, g), gap=0.5 * d,
+              extra=[f"neighbor {0.2 * d} bin", "fix nve all nve/sphere"])
+        mass = lmp.numpy.extract_atom("rmass")[0]
+        stiffness = math.sqrt(2.0) * radius * g / lmp.extract_global("nktv2p")
+        omega = math.sqrt(stiffness / (0.5 * mass))
+        u = 0.05 * d * omega                      # each; the overlap peaks near 0.07 d
+        lmp.commands_list(["group one id 1", "group two id 2",
+                           f"velocity one set {u} 0 0 units box",
+                           f"velocity two set {-u} 0 0 units box",
+                           f"timestep {math.pi / omega / 200}", "thermo_style custom step ke",
+                           "run 0"])
+        ke0 = lmp.get_thermo("ke")
+        steps = int((0.25 * d / u + 2.0 * math.pi / omega) * 200 * omega / math.pi)
+        lmp.command(f"run {steps}")
+        v = lmp.numpy.extract_atom("v")[:2, 0]
+        assert v[0] == pytest.approx(-u, rel=1e-3) and v[1] == pytest.approx(u, rel=1e-3)
+        assert lmp.get_thermo("ke") == pytest.approx(ke0, rel=1e-4)
