@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Idempotent set-up for the cluster-dynamics plugin on Debian 12:
 #   1. Debian packages (compilers, Open MPI, GoogleTest, python3-pytest/numpy/matplotlib/sfepy,
-#      python3-sphinx for the doc build)
+#      python3-sphinx for the doc build, OpenCL with pocl for the GPU package on the CPU)
 #   2. the LAMMPS 4Feb2025 source (Debian's source package, checksum pinned)
 #   3. LAMMPS built as a shared library + lmp, cached under ~/.cache (reused by later runs)
 #   4. the plugin (build/clusterdynplugin.so) and build/env.sh
@@ -27,7 +27,8 @@ lammps_sha256=3671165bd52fad36734e0a9136c5bc5ecb225e03988f8c89aa13366a8b53b1c7
 
 apt_packages=(build-essential cmake ninja-build pkg-config xz-utils dpkg-dev ca-certificates
   libopenmpi-dev openmpi-bin libgtest-dev libeigen3-dev
-  python3 python3-pytest python3-numpy python3-matplotlib python3-mpi4py python3-sfepy python3-sphinx)
+  python3 python3-pytest python3-numpy python3-matplotlib python3-mpi4py python3-sfepy python3-sphinx
+  ocl-icd-opencl-dev opencl-headers pocl-opencl-icd clinfo)
 
 # LAMMPS configuration: changing it changes the cache key
 lammps_cmake_opts=(-DCMAKE_BUILD_TYPE=Release -DBUILD_SHARED_LIBS=on -DBUILD_MPI=on -DBUILD_OMP=on
@@ -35,6 +36,8 @@ lammps_cmake_opts=(-DCMAKE_BUILD_TYPE=Release -DBUILD_SHARED_LIBS=on -DBUILD_MPI
   -DWITH_GZIP=on -DPKG_PLUGIN=on -DPKG_OPENMP=on -DPKG_SHOCK=on -DPKG_EXTRA-PAIR=on
   -DPKG_EXTRA-COMPUTE=on -DPKG_EXTRA-FIX=on -DPKG_MOLECULE=on -DPKG_DPD-BASIC=on -DPKG_LEPTON=on
   -DPKG_BPM=on -DPKG_GRANULAR=on -DPKG_PERI=on -DPKG_OPT=on -DPKG_MACHDYN=on -DDOWNLOAD_EIGEN3=no
+  -DPKG_GPU=on -DGPU_API=opencl -DGPU_PREC=mixed -DUSE_STATIC_OPENCL_LOADER=off
+  -DCMAKE_CXX_FLAGS=-DGERYON_FORCE_SHARED_MAIN_MEM_OFF
   -DCMAKE_SKIP_INSTALL_RPATH=off -DCMAKE_BUILD_RPATH_USE_ORIGIN=on)
 
 say() { printf '[bootstrap] %s\n' "$*"; }

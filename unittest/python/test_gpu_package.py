@@ -1,0 +1,68 @@
+"""The GPU package of the LAMMPS build (OpenCL, mixed precision; on these machines the device is
+the CPU through pocl, Debian's pocl-opencl-icd): stock pair_style morse/gpu against morse on
+the same scenes, with host-built neighbour lists (package gpu 1 neigh no: pocl's device-built
+lists give wrong forces, doc/Build.rst "GPUs").  Oracle: the CPU style.  Mixed precision
+computes each pair in single precision and sums in double: forces agree to 5e-5 of their
+largest, energy and pressure to 1e-6 and 1e-5, and a 200-step run keeps the energy to 1e-6.  500
+atoms: an inum that is not a multiple of 32, where the package, treating pocl's device as one
+that shares the host's memory, stopped with a misaligned sub-buffer (CL error -13); the build
+sets GERYON_FORCE_SHARED_MAIN_MEM_OFF (doc/Build.rst)."""
+import re
+
+import numpy as np
+import pytest
+from conftest import morse_fcc, run_lmp
+
+# a warm fcc block of 500 atoms (lj) and the same in units metal (copper-like Morse: D 0.3429
+# eV, alpha 1.3588 / A, r0 2.866 A, fcc at 3.615 A)
+SCENES = {
+    "lj": (morse_fcc(5, "morse 2.5", noise=0.05, skin=0.3)[:-2] +
+           ["pair_coeff * * 1.0 6.0 1.0", "neighbor 0.3 bin",
+            "velocity all create 0.3 4711 loop geom", "timestep 0.002"]),
+    "metal": ["units metal", "atom_modify map array", "lattice fcc 3.615",
+              "region box block 0 5 0 5 0 5", "create_box 1 box", "create_atoms 1 box",
+              "mass 1 63.546", "displace_atoms all random 0.05 0.05 0.05 4711 units box",
+              "pair_style morse 6.0", "pair_coeff * * 0.3429 1.3588 2.866", "neighbor 1.0 bin",
+              "velocity all create 300 4711 loop geom", "timestep 0.001"],
+}
+REPORT = ["thermo_style custom step pe press etotal", "thermo_modify norm no format float %.15g",
+          "run 0", "write_dump all custom forces.dump id fx fy fz modify sort id format float %.17g",
+          'print "RESULT pe $(pe:%.17g) press $(press:%.17g)"',
+          "fix nve all nve", "run 200", 'print "RESULT pe200 $(pe:%.17g) etotal200 $(etotal:%.17g)"']
+
+
+def run(tmp_path, units, gpu):
+    """The scene under morse (gpu False) or morse/gpu on the OpenCL device: screen, forces."""
+    lines = list(SCENES[units])
+    if gpu:
+        lines = [x.replace("pair_style morse", "pair_style morse/gpu") for x in lines]
+    folder = tmp_path / ("gpu" if gpu else "cpu")
+    folder.mkdir()
+    args = ["-pk", "gpu", "1", "neigh", "no"] if gpu else []
+    out = run_lmp(folder, "\n".join(lines + REPORT) + "\n", args=args)
+    return out, np.loadtxt(folder / "forces.dump", skiprows=9)[:, 1:]
+
+
+def results(out):
+    """The name value pairs of the RESULT lines."""
+    words = " ".join(re.findall(r"^RESULT (.*)$", out, re.M)).split()
+    return {words[k]: float(words[k + 1]) for k in range(0, len(words), 2)}
+
+
+@pytest.mark.parametrize("units", ["lj", "metal"])
+def test_stock_morse_gpu_on_opencl_equals_morse_to_mixed_precision(tmp_path, units):
+    cpu_out, f_cpu = run(tmp_path, units, False)
+    gpu_out, f_gpu = run(tmp_path, units, True)
+    # it ran on the OpenCL device, with the GPU package's morse
+    assert re.search(r"Device 0: .*", gpu_out), gpu_out[-2000:]
+    assert "morse/gpu" in gpu_out
+    cpu, gpu = results(cpu_out), results(gpu_out)
+    scale = np.abs(f_cpu).max()
+    assert scale > 0.0
+    # positions in single precision: 6e-8 of the box's coordinates, times the pairs' stiffness,
+    # over some 80 neighbours (measured: 1e-6 of the scale in lj, 1.5e-5 in metal's 18 A box)
+    assert np.abs(f_gpu - f_cpu).max() < 5e-5 * scale
+    assert gpu["pe"] == pytest.approx(cpu["pe"], rel=1e-6)
+    assert gpu["press"] == pytest.approx(cpu["press"], rel=1e-5, abs=1e-5 * abs(cpu["pe"]))
+    assert gpu["pe200"] == pytest.approx(cpu["pe200"], rel=1e-6)
+    assert gpu["etotal200"] == pytest.approx(cpu["etotal200"], rel=1e-6)
