@@ -809,3 +809,24 @@ def test_elements_beyond_the_state_reach_at_a_build_touch_before_the_next(units)
         v = lmp.numpy.extract_atom("v")[:2, 0]
         assert v[0] == pytest.approx(-u, rel=1e-3) and v[1] == pytest.approx(u, rel=1e-3)
         assert lmp.get_thermo("ke") == pytest.approx(ke0, rel=1e-4)
+
+
+@pytest.mark.parametrize("units", ["lj", "si"])
+def test_a_pair_within_the_tolerance_beyond_the_skin_links_at_the_setup(units):
+    """tolerance T links pairs up to (1 + T)(R_i + R_j) apart at a setup, also where T (R_i +
+    R_j) is more than the skin (the pairs that keep a state reach that far plus the skin): a
+    dimer 1.2 d apart with T = 0.3 and a skin of 0.02 d links, stress free, and pulls back when
+    stretched."""
+    radius, g = SCALE[units]
+    d = 2.0 * radius
+    with session() as lmp:
+        dimer(lmp, units, radius, (2.5 * g, g), gap=0.2 * d,
+              extra=[f"neighbor {0.02 * d} bin", "pair_style mca fraction 0.6 tolerance 0.3",
+                     f"pair_coeff 1 1 bulk {2.5 * g} shear {g}"])
+        assert list(per_atom(lmp)[:, 8]) == [1.0, 1.0]
+        f, _ = forces(lmp)
+        assert np.abs(f).max() == 0.0
+        lmp.commands_list(["group two id 2", f"displace_atoms two move {0.001 * d} 0 0 units box",
+                           "run 0"])
+        f, _ = forces(lmp)
+        assert f[1, 0] < 0.0 < f[0, 0]
