@@ -1,8 +1,9 @@
 /* ----------------------------------------------------------------------
    Cluster-dynamics plugin for LAMMPS: registers every style of the package
    with LAMMPS on "plugin load clusterdynplugin.so".  The /omp variants live
-   in clusterdyn_omp.so beside it (they need the OPENMP package's symbols);
-   it is loaded from here when the host LAMMPS has OPENMP, so that this file
+   in clusterdyn_omp.so beside it (they need the OPENMP package's symbols),
+   the /gpu variants in clusterdyn_gpu.so (the GPU package's); each is
+   loaded from here when the host LAMMPS has its package, so that this file
    loads into any LAMMPS with PLUGIN.
 ------------------------------------------------------------------------- */
 
@@ -49,24 +50,25 @@ template <class Law> void add_spline_style(const StyleRegistrar &styles)
   styles.add<PairSpline<Law>>(Law::style, info.c_str());
 }
 
-// clusterdyn_omp.so from the folder of this file, if the host LAMMPS has OPENMP
-void load_omp_variants(LAMMPS *lmp)
+// a plugin file of variants (clusterdyn_omp.so, clusterdyn_gpu.so) from the folder of this
+// file, if the host LAMMPS has their package
+void load_variants(LAMMPS *lmp, const char *package, const char *file_name, const char *styles)
 {
   const bool me0 = lmp->comm->me == 0;
-  if (!Info::has_package("OPENMP")) {
+  if (!Info::has_package(package)) {
     if (me0)
-      utils::logmesg(lmp, "  cluster-dynamics plugin: this LAMMPS has no OPENMP package; the "
-                     "/omp pair styles are not loaded\n");
+      utils::logmesg(lmp, "  cluster-dynamics plugin: this LAMMPS has no {} package; the {} pair "
+                     "styles are not loaded\n", package, styles);
     return;
   }
   Dl_info self;
-  if (!dladdr((void *) &load_omp_variants, &self) || !self.dli_fname) return;
-  const std::string file = platform::path_join(platform::path_dirname(self.dli_fname),
-                                               "clusterdyn_omp.so");
+  if (!dladdr((void *) &load_variants, &self) || !self.dli_fname) return;
+  const std::string file =
+      platform::path_join(platform::path_dirname(self.dli_fname), file_name);
   if (!platform::file_is_readable(file)) {
     if (me0)
-      utils::logmesg(lmp, "  cluster-dynamics plugin: {} not found; the /omp pair styles are not "
-                     "loaded\n", file);
+      utils::logmesg(lmp, "  cluster-dynamics plugin: {} not found; the {} pair styles are not "
+                     "loaded\n", file, styles);
     return;
   }
   plugin_load(file.c_str(), lmp);
@@ -95,5 +97,6 @@ extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
   styles.add<ComputeLinksAtom>("links/atom", "intact links per atom of a pair style with link L");
   styles.add<ComputeMcaAtom>("mca/atom", "element stress and links of pair_style mca");
 
-  load_omp_variants((LAMMPS *) lmp);
+  load_variants((LAMMPS *) lmp, "OPENMP", "clusterdyn_omp.so", "/omp");
+  load_variants((LAMMPS *) lmp, "GPU", "clusterdyn_gpu.so", "/gpu");
 }

@@ -160,6 +160,18 @@ template <class Law> void PairSpline<Law>::coeff(int narg, char **arg)
 
 template <class Law> void PairSpline<Law>::init_style()
 {
+  check_run();
+  if (links.on()) {
+    neighbor->add_request(this, NeighConst::REQ_HISTORY);
+    state.init();
+  } else
+    neighbor->add_request(this);
+  derive_table();
+}
+
+// init_style's checks of the run, before the lists are requested
+template <class Law> void PairSpline<Law>::check_run()
+{
   if (utils::strmatch(update->integrate_style, "^respa"))
     error->all(FLERR, "Pair {} is not for run_style respa (use run_style verlet)", Law::style);
   if (tail_flag)
@@ -167,11 +179,11 @@ template <class Law> void PairSpline<Law>::init_style()
                "the tail's end)", Law::style);
   damping = nullptr;    // claimed by fix viscous/relative's init, after this
   listed = 0;           // the init_one() calls that follow are the run's own
-  if (links.on()) {
-    neighbor->add_request(this, NeighConst::REQ_HISTORY);
-    state.init();
-  } else
-    neighbor->add_request(this);
+}
+
+// init_style's kernel constants of every type pair set, and the skin's check against them
+template <class Law> void PairSpline<Law>::derive_table()
+{
   kappa_any = 0;    // set by init_one()
   double cutmax = 0.0;
   for (int i = 1; i <= atom->ntypes; i++)

@@ -76,6 +76,8 @@ namespace ClusterDyn {
 
     void allocate();
     void apply(const SplineSettings &s);
+    void check_run();
+    void derive_table();
     SplineKernelData kernel_data(const DampingPass *fused = nullptr) const
     {
       return {table.coeffs, links.coeff.data(), links.making(), setting.chain_n,

@@ -27,7 +27,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 PLUGIN = os.environ["CLUSTERDYN_PLUGIN"]
 LMP = os.environ["CLUSTERDYN_LMP"]
 PAIR_STYLES = [s + v for s in ("morse/spline", "lj/spline", "mie/spline", "harmonic/spline")
-               for v in ("", "/omp")]
+               for v in ("", "/omp", "/gpu")]
 ALL_PAIR_STYLES = PAIR_STYLES + ["mca"]
 FIX_STYLES = ["viscous/relative", "descent/normalized"]
 COMPUTE_STYLES = ["dust", "links/atom", "pair/params", "mca/atom", "free/surface"]

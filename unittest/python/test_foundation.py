@@ -74,7 +74,7 @@ def test_stock_morse_mpi_equals_serial(tmp_path, nprocs):
     assert parallel == pytest.approx(serial, rel=1e-10)
 
 
-# the plugin's split into a core file and an /omp file (doc/Build.rst)
+# the plugin's split into a core file, an /omp file and a /gpu file (doc/Build.rst)
 
 def undefined_symbols(path):
     out = subprocess.run(["nm", "-D", "--undefined-only", "-C", path], capture_output=True,
@@ -89,6 +89,12 @@ def test_core_plugin_needs_no_openmp_package_symbols():
     assert "ThrOMP" in undefined_symbols(omp)    # the /omp styles live there
 
 
+def test_core_plugin_needs_no_gpu_library_symbols():
+    gpu = os.path.join(os.path.dirname(PLUGIN), "clusterdyn_gpu.so")
+    assert "LAMMPS_AL::" not in undefined_symbols(PLUGIN)
+    assert "LAMMPS_AL::BaseAtomic" in undefined_symbols(gpu)    # the /gpu styles live there
+
+
 def test_core_plugin_alone_loads_its_styles(tmp_path):
     alone = tmp_path / "clusterdynplugin.so"
     shutil.copy(PLUGIN, alone)
@@ -97,7 +103,9 @@ def test_core_plugin_alone_loads_its_styles(tmp_path):
         lmp.command(f"plugin load {alone}")
         assert lmp.has_style("pair", "morse/spline") and lmp.has_style("compute", "dust")
         assert not lmp.has_style("pair", "morse/spline/omp")
+        assert not lmp.has_style("pair", "morse/spline/gpu")
     assert "clusterdyn_omp.so not found; the /omp pair styles are not loaded" in log.read_text()
+    assert "clusterdyn_gpu.so not found; the /gpu pair styles are not loaded" in log.read_text()
 
 
 # a free block of smd/tlsph particles (units si: aluminium, simple cubic of 1 mm, h = 2.01
