@@ -5,6 +5,9 @@
 #   2. the LAMMPS 4Feb2025 source (Debian's source package, checksum pinned)
 #   3. LAMMPS built as a shared library + lmp, cached under ~/.cache (reused by later runs)
 #   4. the plugin (build/clusterdynplugin.so) and build/env.sh
+#   5. with the pinned source (no override below): a second, small LAMMPS (core, PLUGIN, GPU
+#      in double precision) and the plugin built against it (build/gpu-double/): the /gpu
+#      styles' double-precision check, which the tests skip without it
 # Overrides (see doc/Build.rst):
 #   CLUSTERDYN_LAMMPS_SOURCE=/path/to/lammps  build that LAMMPS source tree instead of the
 #                                             pinned one (same configuration, own cache entry)
@@ -37,6 +40,13 @@ lammps_cmake_opts=(-DCMAKE_BUILD_TYPE=Release -DBUILD_SHARED_LIBS=on -DBUILD_MPI
   -DPKG_EXTRA-COMPUTE=on -DPKG_EXTRA-FIX=on -DPKG_MOLECULE=on -DPKG_DPD-BASIC=on -DPKG_LEPTON=on
   -DPKG_BPM=on -DPKG_GRANULAR=on -DPKG_PERI=on -DPKG_OPT=on -DPKG_MACHDYN=on -DDOWNLOAD_EIGEN3=no
   -DPKG_GPU=on -DGPU_API=opencl -DGPU_PREC=mixed -DUSE_STATIC_OPENCL_LOADER=off
+  -DCMAKE_CXX_FLAGS=-DGERYON_FORCE_SHARED_MAIN_MEM_OFF
+  -DCMAKE_SKIP_INSTALL_RPATH=off -DCMAKE_BUILD_RPATH_USE_ORIGIN=on)
+# the double-precision GPU build: only what the plugin needs (LAMMPS's core, PLUGIN) and GPU
+lammps_double_opts=(-DCMAKE_BUILD_TYPE=Release -DBUILD_SHARED_LIBS=on -DBUILD_MPI=on
+  -DBUILD_OMP=on -DLAMMPS_EXCEPTIONS=on -DBUILD_TOOLS=off -DWITH_JPEG=off -DWITH_PNG=off
+  -DWITH_FFMPEG=off -DWITH_GZIP=on -DPKG_PLUGIN=on
+  -DPKG_GPU=on -DGPU_API=opencl -DGPU_PREC=double -DUSE_STATIC_OPENCL_LOADER=off
   -DCMAKE_CXX_FLAGS=-DGERYON_FORCE_SHARED_MAIN_MEM_OFF
   -DCMAKE_SKIP_INSTALL_RPATH=off -DCMAKE_BUILD_RPATH_USE_ORIGIN=on)
 
@@ -83,17 +93,19 @@ version_of() {  # $1 = source tree; prints its version as YYYYMMDD (from src/ver
   date -d "$v" +%Y%m%d 2>/dev/null || { say "no LAMMPS version in $1/src/version.h" >&2; exit 1; }
 }
 
-build_lammps() {  # $1 = source tree; prints the build folder
+build_lammps() {  # $1 = source tree, $2.. = its CMake options; prints the build folder
   local src=$1
+  shift
+  local opts=("$@")
   local key
-  key=$(printf '%s\n' "$src" "${lammps_cmake_opts[@]}" | sha256sum | cut -c1-12)
+  key=$(printf '%s\n' "$src" "${opts[@]}" | sha256sum | cut -c1-12)
   local ver
   ver=$(version_of "$src") || exit 1
   local bld=$cache/lammps-$ver-$key
   if [ -f "$bld/.complete" ]; then echo "$bld"; return; fi
   say "building LAMMPS in $bld (several minutes on 2 cores)" >&2
   mkdir -p "$cache"
-  cmake -S "$src/cmake" -B "$bld" -G Ninja "${lammps_cmake_opts[@]}" >"$bld.configure.log" 2>&1 \
+  cmake -S "$src/cmake" -B "$bld" -G Ninja "${opts[@]}" >"$bld.configure.log" 2>&1 \
     || { tail -30 "$bld.configure.log" >&2; exit 1; }
   cmake --build "$bld" -j "$jobs" >"$bld.build.log" 2>&1 || { tail -40 "$bld.build.log" >&2; exit 1; }
   touch "$bld/.complete"
@@ -106,7 +118,11 @@ if [ -n "${CLUSTERDYN_LAMMPS_BUILD:-}" ]; then
   lmp_bld=$CLUSTERDYN_LAMMPS_BUILD
 else
   lmp_src=${CLUSTERDYN_LAMMPS_SOURCE:-$(fetch_lammps_source)}
-  lmp_bld=$(build_lammps "$lmp_src")
+  lmp_bld=$(build_lammps "$lmp_src" "${lammps_cmake_opts[@]}")
+fi
+lmp_double=
+if [ -z "${CLUSTERDYN_LAMMPS_BUILD:-}${CLUSTERDYN_LAMMPS_SOURCE:-}" ]; then
+  lmp_double=$(build_lammps "$lmp_src" "${lammps_double_opts[@]}")
 fi
 [ -x "$lmp_bld/lmp" ] && [ -e "$lmp_bld/liblammps.so" ] \
   || { say "no lmp / liblammps.so in $lmp_bld"; exit 1; }
@@ -116,12 +132,30 @@ lmp_libs=$(ldd "$lmp_bld/lmp")
 [[ $lmp_libs == *"liblammps.so.0 => $lmp_bld/"* ]] \
   || { say "$lmp_bld/lmp does not load its own liblammps.so.0:"; grep lammps <<<"$lmp_libs"; exit 1; }
 
-# the plugin: reconfigure only when the LAMMPS build changed
+# the plugin against the double-precision GPU build (its files only, for the tests)
+double_bld=
+if [ -n "$lmp_double" ]; then
+  double_bld=$plugin_bld/gpu-double
+  mkdir -p "$double_bld"
+  if [ ! -f "$double_bld/build.ninja" ] || ! grep -qs "LAMMPS_BUILD_DIR:PATH=$lmp_double\$" "$double_bld/CMakeCache.txt"; then
+    cmake -S "$top" -B "$double_bld" -G Ninja -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=off \
+      -DLAMMPS_ROOT="$lmp_src" -DLAMMPS_BUILD_DIR="$lmp_double" >"$double_bld/configure.log" 2>&1 \
+      || { tail -30 "$double_bld/configure.log"; exit 1; }
+  fi
+fi
+
+# the plugin: reconfigure only when a LAMMPS build changed
 mkdir -p "$plugin_bld"
-if [ ! -f "$plugin_bld/build.ninja" ] || ! grep -qs "LAMMPS_BUILD_DIR:PATH=$lmp_bld\$" "$plugin_bld/CMakeCache.txt"; then
+if [ ! -f "$plugin_bld/build.ninja" ] || ! grep -qs "LAMMPS_BUILD_DIR:PATH=$lmp_bld\$" "$plugin_bld/CMakeCache.txt" \
+   || ! grep -qs "CLUSTERDYN_GPU_DOUBLE_DIR:PATH=$double_bld\$" "$plugin_bld/CMakeCache.txt"; then
   cmake -S "$top" -B "$plugin_bld" -G Ninja -DCMAKE_BUILD_TYPE=Release \
-    -DLAMMPS_ROOT="$lmp_src" -DLAMMPS_BUILD_DIR="$lmp_bld" >"$plugin_bld/configure.log" 2>&1 \
-    || { tail -30 "$plugin_bld/configure.log"; exit 1; }
+    -DLAMMPS_ROOT="$lmp_src" -DLAMMPS_BUILD_DIR="$lmp_bld" \
+    -DCLUSTERDYN_GPU_DOUBLE_DIR="$double_bld" -DCLUSTERDYN_GPU_DOUBLE_LAMMPS="$lmp_double" \
+    >"$plugin_bld/configure.log" 2>&1 || { tail -30 "$plugin_bld/configure.log"; exit 1; }
+fi
+if [ -n "$double_bld" ]; then
+  cmake --build "$double_bld" -j "$jobs" --target clusterdynplugin >"$double_bld/build.log" 2>&1 \
+    || { tail -40 "$double_bld/build.log"; exit 1; }
 fi
 cmake --build "$plugin_bld" -j "$jobs" >"$plugin_bld/build.log" 2>&1 || { tail -40 "$plugin_bld/build.log"; exit 1; }
 say "ready: source $plugin_bld/env.sh"

@@ -58,11 +58,12 @@ def session(*cmdargs, plugin=True):
         lmp.close()
 
 
-def run_lmp(tmp_path, script, nprocs=1, name="in.test", env=None, args=()):
-    """Run the lmp executable (under mpirun for nprocs > 1) on script; return stdout."""
+def run_lmp(tmp_path, script, nprocs=1, name="in.test", env=None, args=(), lmp=None):
+    """Run the lmp executable (or lmp, another LAMMPS build's; under mpirun for nprocs > 1) on
+    script; return stdout."""
     infile = tmp_path / name
     infile.write_text(script)
-    cmd = [LMP, "-in", str(infile), "-log", "none", "-nocite", *args]
+    cmd = [lmp or LMP, "-in", str(infile), "-log", "none", "-nocite", *args]
     if nprocs > 1:
         cmd = ["mpirun", "-np", str(nprocs), "--oversubscribe"] + cmd
     run_env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")

@@ -11,7 +11,12 @@ Energy within 1e-6, pressure 1e-5, per-atom energy and virial within the same bo
 times the pair distance, a 100-step run keeps the total energy to 1e-6.  Every law, every
 tail, kappa on and off, in units lj and metal; the host's share of the atoms (package gpu
 split), 2 MPI ranks, fix viscous/relative beside the pair, and the refusals.
-On a real GPU the same tests run with device-built lists: CLUSTERDYN_GPU_NEIGH=yes."""
+On a real GPU the same tests run with device-built lists: CLUSTERDYN_GPU_NEIGH=yes.
+In double precision (a second LAMMPS build with GPU_PREC=double and the plugin built against it,
+made by tools/bootstrap.sh: CLUSTERDYN_GPU_DOUBLE_LAMMPS, CLUSTERDYN_GPU_DOUBLE_PLUGIN) the same
+scenes agree to round-off: each pair's force within 32 ulp (the device's exp and pow against
+glibc's, OpenCL's own bound for pow being 16 ulp), summed without cancellation over the
+neighbours."""
 import math
 import os
 import re
@@ -99,13 +104,26 @@ REPORT = ["compute pe all pe/atom", "compute s all stress/atom NULL pair",
           "fix nve all nve", "run 100", 'print "RESULT etotal100 $(etotal:%.17g)"']
 
 
-def run(tmp_path, lines, folder, gpu=None, nprocs=1):
-    """The scene on the CPU style (gpu None) or with -sf gpu and package gpu's options."""
+# the double-precision build (tools/bootstrap.sh); the tests that need it skip without it
+DOUBLE_LAMMPS = os.environ.get("CLUSTERDYN_GPU_DOUBLE_LAMMPS", "")
+DOUBLE_PLUGIN = os.environ.get("CLUSTERDYN_GPU_DOUBLE_PLUGIN", "")
+needs_double = pytest.mark.skipif(not (DOUBLE_PLUGIN and os.path.exists(DOUBLE_PLUGIN)),
+                                  reason="no LAMMPS with the GPU package in double precision "
+                                  "(tools/bootstrap.sh makes it)")
+
+
+def run(tmp_path, lines, folder, gpu=None, nprocs=1, double=False):
+    """The scene on the CPU style (gpu None) or with -sf gpu and package gpu's options; double:
+    in the double-precision build (its lmp, its liblammps first on the library path)."""
     path = tmp_path / folder
     path.mkdir()
     args = ["-sf", "gpu", "-pk", "gpu", "1", "neigh", NEIGH, *gpu] if gpu is not None else []
-    out = run_lmp(path, "\n".join([f"plugin load {PLUGIN}"] + list(lines)) + "\n", args=args,
-                  nprocs=nprocs)
+    plugin, lmp, env = PLUGIN, None, None
+    if double:
+        plugin, lmp = DOUBLE_PLUGIN, os.path.join(DOUBLE_LAMMPS, "lmp")
+        env = {"LD_LIBRARY_PATH": DOUBLE_LAMMPS + ":" + os.path.dirname(DOUBLE_PLUGIN)}
+    out = run_lmp(path, "\n".join([f"plugin load {plugin}"] + list(lines)) + "\n", args=args,
+                  nprocs=nprocs, lmp=lmp, env=env)
     return out, np.loadtxt(path / "forces.dump", skiprows=9)
 
 
@@ -173,6 +191,33 @@ def test_gpu_variant_equals_the_cpu_style_to_mixed_precision(tmp_path, case, uni
     assert g["etotal100"] == pytest.approx(c["etotal100"], rel=1e-6)
 
 
+@needs_double
+@pytest.mark.parametrize("units", ["lj", "metal"])
+@pytest.mark.parametrize("case", list(CASES))
+def test_gpu_variant_in_double_precision_equals_the_cpu_style_to_round_off(tmp_path, case, units):
+    lines = scene(case, units) + REPORT
+    cpu_out, cpu = run(tmp_path, lines, "cpu", double=True)
+    gpu_out, gpu = run(tmp_path, lines, "gpu", gpu=[], double=True)
+    assert "(Double Precision)" in gpu_out
+    assert f"Using acceleration for {CASES[case][0]}/spline:" in gpu_out
+    n = 2.0 * float(re.search(r"Ave neighs/atom = (\S+)", cpu_out).group(1))
+    fmax = np.abs(cpu[:, 1:4]).max()    # at least the largest pair force's component
+    a = UNITS[units][1]
+    side = 5 * a * math.sqrt(2.0)
+    r = closest(cpu, side)
+    fpair = max(abs(law.f(r)) for law in laws(case, units).values())
+    bound = 32 * 2.0 ** -52 * fpair * n
+    assert fmax > 1e6 * bound
+    assert np.abs(gpu[:, 1:4] - cpu[:, 1:4]).max() < bound
+    cut = 2.0 * a
+    assert np.abs(gpu[:, 4] - cpu[:, 4]).max() < bound * cut + 1e-14 * np.abs(cpu[:, 4]).max()
+    assert np.abs(gpu[:, 5:7] - cpu[:, 5:7]).max() < bound * cut * NKTV2P[units]
+    c, g = results(cpu_out), results(gpu_out)
+    assert g["pe"] == pytest.approx(c["pe"], rel=1e-13)
+    assert g["press"] == pytest.approx(c["press"], abs=1e-13 * virial_scale(cpu, side))
+    assert g["etotal100"] == pytest.approx(c["etotal100"], rel=1e-12)
+
+
 @pytest.mark.parametrize("case", ["morse-lagunov", "lj-cut-kappa"])
 def test_host_share_of_the_atoms_equals_the_cpu_style(tmp_path, case):
     """package gpu split 0.5 (which needs newton off): half of the atoms' forces on the host
@@ -215,6 +260,35 @@ def test_more_types_than_local_memory_holds(tmp_path):
     assert np.abs(gpu[:, 1:4] - cpu[:, 1:4]).max() < bound
     c, g = results(cpu_out), results(gpu_out)
     assert g["pe"] == pytest.approx(c["pe"], rel=1e-6)
+    assert g["etotal100"] == pytest.approx(c["etotal100"], rel=1e-6)
+
+
+def test_special_bonds_with_a_shifted_cut_tail(tmp_path):
+    """Bonded nearest neighbours (atom_style bond, bond_style zero) with special_bonds lj 0 0.5
+    0.8 and pair_modify shift yes: each special pair's energy is its factor times the shifted
+    law, e - offset, as the CPU style tallies it."""
+    lines = ["units lj", "atom_style bond", "atom_modify map array", "lattice fcc 1.41421356",
+             "region box block 0 4 0 4 0 4",
+             "create_box 1 box bond/types 1 extra/bond/per/atom 12 extra/special/per/atom 200",
+             "create_atoms 1 box", "mass 1 1.0", "reset_atoms id sort yes",
+             "displace_atoms all random 0.03 0.03 0.03 4712 units box",
+             "velocity all create 0.02 4713 loop geom", "bond_style zero", "bond_coeff 1 1.0",
+             "pair_style zero 1.6", "pair_coeff * *", "create_bonds many all all 1 0.9 1.1",
+             "special_bonds lj 0.0 0.5 0.8", "pair_style morse/spline cut 1.6",
+             "pair_coeff 1 1 1.0 6.0 1.0", "pair_modify shift yes", "neighbor 0.3 bin"] + REPORT
+    cpu_out, cpu = run(tmp_path, lines, "cpu")
+    gpu_out, gpu = run(tmp_path, lines, "gpu", gpu=[])
+    assert "Using acceleration for morse/spline:" in gpu_out
+    law = Law("morse", D=1.0, a=1.0, alpha=6.0)
+    side = 4 * math.sqrt(2.0)
+    r = closest(cpu, side)
+    h = 1e-6
+    n = 2.0 * float(re.search(r"Ave neighs/atom = (\S+)", cpu_out).group(1))
+    bound = (4.0 * 2.0 ** -24 * (side * abs(law.f(r + h) - law.f(r - h)) / (2 * h) + abs(law.f(r)))
+             * math.sqrt(n))
+    assert np.abs(gpu[:, 1:4] - cpu[:, 1:4]).max() < bound
+    c, g = results(cpu_out), results(gpu_out)
+    assert g["pe"] == pytest.approx(c["pe"], rel=1e-6, abs=1e-6 * abs(law.pi(1.6)))
     assert g["etotal100"] == pytest.approx(c["etotal100"], rel=1e-6)
 
 
