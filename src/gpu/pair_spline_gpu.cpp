@@ -177,6 +177,8 @@ template <class Law> double PairSplineGPU<Law>::memory_usage()
 
 /* ----------------------------------------------------------------------
    the host's share (package gpu split < 1): full lists, as the device's
+   (the CPU kernel, spline_kernel.h, walks half lists and adds both ends
+   of each pair), each pair's law and tail as the CPU kernel evaluates it
 ------------------------------------------------------------------------- */
 
 template <class Law>

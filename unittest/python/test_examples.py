@@ -10,9 +10,9 @@ from conftest import LMP, PLUGIN
 EXAMPLES = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..", "examples"))
 
 
-def run_example(name, script, *var):
+def run_example(name, script, *var, args=()):
     env = dict(os.environ, LAMMPS_PLUGIN_PATH=os.path.dirname(PLUGIN))
-    cmd = [LMP, "-in", script, "-log", "none", "-nocite"]
+    cmd = [LMP, "-in", script, "-log", "none", "-nocite", *args]
     for k, v in var:
         cmd += ["-var", k, str(v)]
     out = subprocess.run(cmd, cwd=os.path.join(EXAMPLES, name), env=env, capture_output=True,
@@ -57,9 +57,23 @@ def test_params_table_matches_closed_forms():
     assert "c0 = 5454 m/s, vd = 1451 m/s" in out
 
 
-def shock3d(*var):
+def shock3d(*var, args=()):
     return run_example("shock-3d", "in.shock3d", ("length", 4e-4), ("time", 3e-8),
-                       ("records", 10), ("out", "/tmp/test_examples_shock3d"), *var)
+                       ("records", 10), ("out", "/tmp/test_examples_shock3d"), *var, args=args)
+
+
+def test_shock3d_runs_on_the_gpu_package():
+    """The example under -sf gpu (morse/spline/gpu on pocl, host lists): the same shock as the
+    CPU style, kinetic and potential energy of the last row within mixed precision's 1e-6."""
+    def last_row(out):
+        rows = re.findall(r"^\s+\d+\s+\S+\s+(\S+)\s+(\S+)\s+\S+\s+\S+\s+\d+\s+\d+\s*$", out, re.M)
+        return [float(v) for v in rows[-1]]
+    cpu = shock3d()
+    gpu = shock3d(args=("-sf", "gpu", "-pk", "gpu", "1", "neigh", "no"))
+    assert "Using acceleration for morse/spline:" in gpu
+    ke, pe = last_row(cpu)
+    assert ke > 0.0 and pe != 0.0    # the piston has moved the sample: numbers to compare
+    assert last_row(gpu) == pytest.approx([ke, pe], rel=1e-6)
 
 
 def test_shock3d_takes_the_sets_cut():
