@@ -100,6 +100,7 @@ namespace ClusterDyn {
     struct Turn {
       double k[3] = {0.0, 0.0, 0.0}, c = 1.0, s = 0.0;
       bool none = true;
+      Turn() = default;    // no turn
       explicit Turn(const double *phi)
       {
         const double angle = sqrt(dot(phi, phi));

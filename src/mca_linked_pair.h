@@ -88,9 +88,10 @@ namespace ClusterDyn {
            0.5 * (back * v[C::DR] + (1.0 - phi) * v[C::DTAU]));
     }
 
-    // the relative rotation of j against i: turned with the contact, then advanced by
-    // dt (omega_j - omega_i)
-    void rotate(const C::Turn &turn, const double *omega_i, const double *omega_j, double dt)
+    // the relative rotation of j against i (in the pair's state v): turned with the contact,
+    // then advanced by dt (omega_j - omega_i)
+    static void rotate(double *v, const C::Turn &turn, const double *omega_i,
+                       const double *omega_j, double dt)
     {
       double *rot = v + C::ROT;
       turn.apply(rot);
@@ -126,10 +127,11 @@ namespace ClusterDyn {
     }
 
     // this step after the trial stress sigma: the plastic return by phi about mean (phi < 1),
-    // the rotation (turn: null where the elements do not turn), damage or breaking (under
-    // sigma and the elements' mean stress from their pressure: pressure, null where there
-    // is none), the force; false: the pair breaks and transmits nothing from now on.  Inlined into the
-    // force pass: as a call it costs 10 % of pair mca's Pair time (bench/bench_pair_ab.sh)
+    // the rotation (turn: null where the elements do not turn, or where the plastic pass has
+    // turned the link already), damage or breaking (under sigma and the elements' mean stress
+    // from their pressure: pressure, null where there is none), the force; false: the pair
+    // breaks and transmits nothing from now on.  Inlined into the force pass: as a call it
+    // costs 10 % of pair mca's Pair time (bench/bench_pair_ab.sh)
     [[gnu::always_inline]] bool step(double sigma, double phi, double mean, const McaPairFrame &p,
                                      const C::Turn *turn, const double *omega_i,
                                      const double *omega_j, double dt, const McaPairTally &tally,
@@ -141,7 +143,7 @@ namespace ClusterDyn {
         tally.work(WORK_PLASTIC, plastic_return(sigma, phi, mean, p.r, dv));
         tally.volume_change(McaVolumeChanges::CHANGE_PLASTIC, dv);
       }
-      if (turn) rotate(*turn, omega_i, omega_j, dt);
+      if (turn) rotate(v, *turn, omega_i, omega_j, dt);
       double moment[3], lost = 0.0;
       const double elong = elongation(p.r), tau2 = C::dot(v + C::TAU, v + C::TAU);
       const double epair = energy(p.n, elong, v[C::ET], moment);

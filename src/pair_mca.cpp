@@ -145,8 +145,9 @@ void PairMCA::volumetric_strain(const StatePass &pass)
 
 /* ----------------------------------------------------------------------
    plasticity: every linked pair's trial stresses (tau stored, sigma in
-   SIG), the elements' stresses from them (Love's formula), then each
-   element's radial return factor and mean stress, sent to ghosts
+   SIG) and its relative rotation turned, the elements' stresses from them
+   (Love's formula), then each element's radial return factor and mean
+   stress, sent to ghosts
 ------------------------------------------------------------------------- */
 
 void PairMCA::plastic_trial(const StatePass &pass)
@@ -166,11 +167,14 @@ void PairMCA::plastic_trial(const StatePass &pass)
     if (p.rsq == 0.0) coincident_elements(lmp, i, j);
     p.orient(radius[i], radius[j]);
     const C::Turn turn = p.turn(omega[i], omega[j], dt);
-    // this step's motion of the pair, for the trapezoid rule of the plastic work
-    v[C::DR] = moving ? C::motion(v, sqrt(p.rsq)) : 0.0;
+    // this step's motion of the pair, for the trapezoid rule of the plastic work (with a shock
+    // law the volume pass has taken it)
+    if (!eos.active()) v[C::DR] = moving ? C::motion(v, sqrt(p.rsq)) : 0.0;
     double dut[3];
     v[C::SIG] = trial_stresses(i, j, v, p, moving ? &turn : nullptr, dut);
     v[C::DTAU] = moving ? C::dot(v + C::TAU, dut) : 0.0;
+    // the link's relative rotation with the same turn, which the force pass then needs not take
+    if (moving) McaLinkedPair::rotate(v, turn, omega[i], omega[j], dt);
     const double intact = types.model(atom->type[i], atom->type[j]).response.intact(v[C::KAPPA]);
     stress.add_trial(i, j, p, v, intact, stiffness.half(i), stiffness.half(j),
                      newton || j < nlocal);
@@ -225,8 +229,10 @@ void PairMCA::pair_forces(const StatePass &pass, StateTally &changes)
     const bool jown = newton || j < nlocal;
     const McaPairTally tally{changes, jown ? 1.0 : 0.5, tracks_changes ? &manybody : nullptr,
                              i, j, ai, aj, jown, eos.active() ? &eos : nullptr};
-    const C::Turn turn = p.turn(omega[i], omega[j], dt);    // of the pair's stored vectors
-    const C::Turn *turning = moving ? &turn : nullptr;
+    // the turn of the pair's stored vectors; a link's, with plasticity, turned in the plastic pass
+    const bool turned = linked && plastic;
+    const C::Turn turn = moving && !turned ? p.turn(omega[i], omega[j], dt) : C::Turn();
+    const C::Turn *turning = moving && !turned ? &turn : nullptr;
     const McaPairModel &model = types.model(atom->type[i], atom->type[j]);
     double *v = pass.pair_values(i, jj);
     McaPairForce out;

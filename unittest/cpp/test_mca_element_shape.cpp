@@ -1,7 +1,7 @@
-// McaElementShape (mca_element_shape.h, doc/pair_mca.rst "Shock equation of state"): the
-// smallest eigenvalue of a symmetric 3 x 3 against a rotated diagonal one; K^-1 K = I; a full fcc
-// neighbourhood and a free (100) face span a volume, a flat set of links and a chain do not;
-// the gradient of an affine displacement is that displacement's matrix.
+// McaElementShape (mca_element_shape.h, doc/pair_mca.rst "Shock equation of state"): the span
+// test of symmetric 3 x 3 matrices, rotated diagonal ones on both sides of its bound; K^-1 K = I;
+// a full fcc neighbourhood and a free (100) face span a volume, a flat set of links and a chain
+// do not; the gradient of an affine displacement is that displacement's matrix.
 #include "mca_element_shape.h"
 
 #include "gtest/gtest.h"
@@ -32,22 +32,45 @@ const double FCC[12][3] = {{1, 1, 0},  {1, -1, 0},  {-1, 1, 0}, {-1, -1, 0},
 
 }    // namespace
 
-TEST(McaElementShape, SmallestEigenvalueOfARotatedDiagonal)
+// R diag(d) R^T, R a rotation by 0.7 about z then 0.3 about x, as xx yy zz xy xz yz
+void rotated_diagonal(const double *d, double *s)
 {
-  // R diag(1, 2, 5) R^T, R a rotation by 0.7 about z then 0.3 about x
   const double c1 = cos(0.7), s1 = sin(0.7), c2 = cos(0.3), s2 = sin(0.3);
   const double r[3][3] = {{c1, -s1, 0}, {c2 * s1, c2 * c1, -s2}, {s2 * s1, s2 * c1, c2}};
-  const double d[3] = {1.0, 2.0, 5.0};
   double m[3][3];
   for (int a = 0; a < 3; a++)
     for (int b = 0; b < 3; b++) {
       m[a][b] = 0.0;
       for (int k = 0; k < 3; k++) m[a][b] += r[a][k] * d[k] * r[b][k];
     }
-  const double s[6] = {m[0][0], m[1][1], m[2][2], m[0][1], m[0][2], m[1][2]};
-  EXPECT_NEAR(McaElementShape::smallest_eigenvalue(s), 1.0, 1e-12);
+  const double v[6] = {m[0][0], m[1][1], m[2][2], m[0][1], m[0][2], m[1][2]};
+  for (int k = 0; k < 6; k++) s[k] = v[k];
+}
+
+TEST(McaElementShape, SpansWhereTheSmallestEigenvalueExceedsATenthOfTheMean)
+{
+  // eigenvalues (x, 2, 5): the smallest is 0.1 of the mean (x + 7) / 3 at x = 0.7 / 2.9;
+  // each ordering of the eigenvalues (which leading minor decides) on both sides of it
+  const double edge = 0.7 / 2.9;
+  for (int place = 0; place < 3; place++)
+    for (const double side : {1.0 + 1e-9, 1.0 - 1e-9}) {
+      const double x = edge * side;
+      const double orders[3][3] = {{x, 2.0, 5.0}, {2.0, x, 5.0}, {5.0, 2.0, x}};
+      const double *d = orders[place];
+      double s[6];
+      rotated_diagonal(d, s);
+      EXPECT_EQ(McaElementShape::spans(s), side > 1.0) << place << " " << side;
+      // the same matrix unrotated
+      const double diag[6] = {d[0], d[1], d[2], 0.0, 0.0, 0.0};
+      EXPECT_EQ(McaElementShape::spans(diag), side > 1.0) << place << " " << side;
+    }
   const double iso[6] = {3.0, 3.0, 3.0, 0.0, 0.0, 0.0};
-  EXPECT_EQ(McaElementShape::smallest_eigenvalue(iso), 3.0);
+  EXPECT_TRUE(McaElementShape::spans(iso));
+  // chains along x and along z: two eigenvalues below the bound, each found by another minor
+  const double along_x[6] = {2.0, 1e-4, 1e-4, 0.0, 0.0, 0.0};
+  EXPECT_FALSE(McaElementShape::spans(along_x));
+  const double along_z[6] = {1e-4, 1e-4, 2.0, 0.0, 0.0, 0.0};
+  EXPECT_FALSE(McaElementShape::spans(along_z));
 }
 
 TEST(McaElementShape, FullAndFreeFaceNeighbourhoodsSpanAVolume)
@@ -61,7 +84,9 @@ TEST(McaElementShape, FullAndFreeFaceNeighbourhoodsSpanAVolume)
   const double face[8][3] = {{0, 1, 1}, {0, 1, -1}, {0, -1, 1}, {0, -1, -1},
                              {1, 1, 0}, {1, -1, 0}, {1, 0, 1},  {1, 0, -1}};
   shape(face, 8, s);
-  EXPECT_NEAR(McaElementShape::smallest_eigenvalue(s) / ((s[0] + s[1] + s[2]) / 3.0), 0.75, 1e-12);
+  // its K is diag(4, 6, 6) (the face normal along x): the smallest eigenvalue 0.75 of the mean
+  EXPECT_NEAR(s[0], 4.0, 1e-14);
+  EXPECT_NEAR(s[1], 6.0, 1e-14);
   EXPECT_TRUE(McaElementShape::invert(s, inv));
 }
 

@@ -149,17 +149,58 @@ def test_dimer_shear_and_rotation(units):
     assert np.abs(f).max() <= 1e-9 * ref.S * ref.a * radius
 
 
-def spun_dimer(units, radius, moduli, omega):
+def spun_dimer(units, radius, moduli, omega, extra=()):
     """A linked dimer along x whose element 1 spins (omega: a template of its components) by
     1e-4 per step, after one step: the reference, the turn spin dt, forces and torques."""
     with session() as lmp:
-        dimer(lmp, units, radius, moduli)
+        dimer(lmp, units, radius, moduli, extra=extra)
         spin = 1.0e-4 / lmp.extract_global("dt")
         lmp.commands_list(["group one id 1", "set group one omega " + omega.format(spin),
                            "run 1"])
         ref = Dimer(radius, *moduli, lmp.extract_global("nktv2p"))
         f, t = forces(lmp)
         return ref, spin * lmp.extract_global("dt"), f, t
+
+
+@pytest.mark.parametrize("units", ["lj", "si"])
+def test_yielding_link_bends_and_turns_as_an_elastic_one(units):
+    """With a yield stress the plastic pass turns a link's stored vectors and its relative
+    rotation, and the force pass does not turn them again.  Below yield the link is elastic:
+    one step of a spin gives the bending and twisting moments of the closed form, and 30 steps
+    of both elements spinning about changing axes (the relative rotation turned by the
+    contact's spin every step) give the forces and torques of the same dimer without yield."""
+    radius, g = SCALE[units]
+    k = 2.0 * g
+    never = [f"pair_coeff 1 1 bulk {k} shear {g} yield {1.0e3 * g}"]
+    ref, turn, f, t = spun_dimer(units, radius, (k, g), "0 0 {}", never)
+    bend = ref.a * ref.S ** 2 / (4 * math.pi) * turn
+    slide = 2 * radius * math.sin(0.5 * turn)
+    assert t[0, 2] == pytest.approx(-radius * ref.S * ref.a * slide - bend, rel=1e-6)
+    assert t[1, 2] == pytest.approx(-radius * ref.S * ref.a * slide + bend, rel=1e-6)
+    ref, turn, f, t = spun_dimer(units, radius, (k, g), "{} 0 0", never)
+    twist = ref.a * ref.S ** 2 / (2 * math.pi) * turn
+    assert t[0, 0] == pytest.approx(-twist, rel=1e-6)
+    assert t[1, 0] == pytest.approx(twist, rel=1e-6)
+
+    def history(extra):
+        rows = []
+        with session() as lmp:
+            dimer(lmp, units, radius, (k, g), extra=extra)
+            spin = 1.0e-3 / lmp.extract_global("dt")
+            lmp.commands_list(["fix nve all nve/sphere", "group one id 1", "group two id 2"])
+            for step in range(3):
+                a, b = 0.3 + step, 1.1 * step
+                lmp.commands_list([
+                    f"set group one omega {spin * math.cos(a)} {spin * math.sin(a)} {0.5 * spin}",
+                    f"set group two omega {-0.7 * spin} {spin * math.cos(b)} {spin * math.sin(b)}",
+                    "run 10"])
+                rows.append(np.concatenate(forces(lmp)))
+        return np.array(rows)
+
+    elastic, plastic = history(()), history(never)
+    scale = np.abs(elastic).max()
+    assert scale > 0.0
+    assert np.abs(plastic - elastic).max() <= 1e-9 * scale
 
 
 @pytest.mark.parametrize("units", ["lj", "si"])
