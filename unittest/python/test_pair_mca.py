@@ -204,6 +204,34 @@ def test_yielding_link_bends_and_turns_as_an_elastic_one(units):
 
 
 @pytest.mark.parametrize("units", ["lj", "si"])
+def test_a_yielding_materials_contact_turns_with_a_rigid_rotation(units):
+    """An unlinked contact of a material with yield (its links turn in the plastic pass, its
+    contacts in the force pass): a compressed dimer that does not link, sheared below its
+    friction limit, turned a quarter of a turn by fix move rotate about an axis across it: the
+    force on each element is the turned force of the start (the contact's tangential stress and
+    last separation turn with the contact's spin; measured to round-off)."""
+    radius, g = SCALE[units]
+    k = 2.0 * g
+    delta = 1.0e-3 * radius
+    with session() as lmp:
+        dimer(lmp, units, radius, (k, g), gap=-delta,
+              extra=[f"pair_coeff 1 1 bulk {k} shear {g} yield {1.0e3 * g} friction 1.0 link no"])
+        lmp.commands_list(["group two id 2",
+                           f"displace_atoms two move 0 {0.1 * delta} {0.05 * delta} units box",
+                           "run 0"])
+        f0 = forces(lmp)[0].copy()
+        assert np.abs(f0[0, 1:]).max() > 0.05 * np.abs(f0[0, 0])    # a tangential force
+        period = 100.0 * lmp.extract_global("dt")
+        lmp.commands_list([f"fix turn all move rotate 0 0 0 0 1 1 {period}",
+                           f"run {int(round(period / 4 / lmp.extract_global('dt')))}"])
+        f1 = forces(lmp)[0]
+    axis = np.array([0.0, 1.0, 1.0]) / math.sqrt(2.0)
+    kx = np.array([[0, -axis[2], axis[1]], [axis[2], 0, -axis[0]], [-axis[1], axis[0], 0]])
+    rot = np.eye(3) + kx + kx @ kx    # a quarter turn: sin 1, 1 - cos 1
+    assert np.abs(f1 - f0 @ rot.T).max() <= 1e-6 * np.abs(f0).max()
+
+
+@pytest.mark.parametrize("units", ["lj", "si"])
 def test_mixed_materials_dimer(units):
     """Two materials and sizes: the halves in series (a = a_i a_j / (a_i + a_j), a_i = 2 G_i /
     R_i), element i's share w_i = a_j / (a_i + a_j) of the elongation in its volumetric strain,
