@@ -202,12 +202,13 @@ void ComputeDust::join_bonded_atoms()
   if (opt.links && !state->made())
     error->all(FLERR, "Compute dust links: the links are not made yet (they are at the setup of "
                "the first run or minimization: run 0 will do)");
-  const StateView view = opt.links ? state->view() : StateView{list, nullptr, nullptr, 0, 1};
+  const StateView view = opt.links ? state->view() : StateView{list, nullptr, nullptr};
   const NeighList *bonds = view.list;
   for (int ii = 0; ii < bonds->inum; ii++) {
     const int i = bonds->ilist[ii];
     if (!(mask[i] & groupbit)) continue;
-    for (int jj = 0; jj < bonds->numneigh[i]; jj++) {
+    const int jnum = opt.links ? view.counts[i] : bonds->numneigh[i];    // links: the first
+    for (int jj = 0; jj < jnum; jj++) {
       const int j = bonds->firstneigh[i][jj] & NEIGHMASK;
       if (!(mask[j] & groupbit)) continue;
       if (opt.links) {

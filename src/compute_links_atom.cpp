@@ -62,7 +62,7 @@ void ComputeLinksAtom::compute_peratom()
     const NeighList *list = links.list;
     for (int ii = 0; ii < list->inum; ii++) {
       const int i = list->ilist[ii];
-      for (int jj = 0; jj < list->numneigh[i]; jj++) {
+      for (int jj = 0; jj < links.counts[i]; jj++) {
         if (!state_now(links.words[i][jj])) continue;
         const int j = list->firstneigh[i][jj] & NEIGHMASK;
         count[i] += 1.0;

@@ -28,6 +28,7 @@ namespace ClusterDyn {
   struct DampingBonds {
     const NeighList *list;
     int *const *words;    // link L: the pair states of list's pairs; else null
+    const int *counts;    // with words: per atom, its first pairs that have a state word
   };
 
   struct DampingPairs {
@@ -76,7 +77,7 @@ namespace ClusterDyn {
         const double vxtmp = v[i].x, vytmp = v[i].y, vztmp = v[i].z;
         double fxtmp = 0.0, fytmp = 0.0, fztmp = 0.0;
         const int *jlist = list->firstneigh[i];
-        const int jnum = list->numneigh[i];
+        const int jnum = LINKED ? bonds.counts[i] : list->numneigh[i];    // the rest: unlinked
         for (int jj = 0; jj < jnum; jj++) {
           const int j = jlist[jj] & NEIGHMASK;
           const double delx = xtmp - x[j].x;

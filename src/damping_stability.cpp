@@ -32,7 +32,8 @@ void ClusterDyn::check_damping_stability(LAMMPS *lmp, Fix *fix, const DampingBon
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];
     if (!(mask[i] & groupbit)) continue;
-    for (int jj = 0; jj < list->numneigh[i]; jj++) {
+    const int jnum = bonds.words ? bonds.counts[i] : list->numneigh[i];    // the rest: unlinked
+    for (int jj = 0; jj < jnum; jj++) {
       const int j = list->firstneigh[i][jj] & NEIGHMASK;
       if (!(mask[j] & groupbit)) continue;
       const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];

@@ -4,8 +4,8 @@
 
 #include "fix_pair_state.h"
 
-#include "mpi_collectives.h"
 #include "pair_state.h"
+#include "pair_state_audit.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -20,18 +20,24 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <unordered_map>
-#include <unordered_set>
 #include <vector>
 
 using namespace LAMMPS_NS;
 using namespace ClusterDyn;
 
+// ID group PAIR_STATE row [within]: row, the doubles per pair (the owner's and the word's
+// slot); within, a bit mask of the owner's doubles that live within a step (not saved)
 FixPairState::FixPairState(LAMMPS *lmp, int narg, char **arg) :
-    FixNeighHistory(lmp, narg, arg), owner(nullptr), saved_id(nullptr), nds_current(0),
-    nstate(nullptr), maxstate(0)
+    FixNeighHistory(lmp, 4, arg), owner(nullptr), saved_id(nullptr), nds_current(0),
+    nstate(nullptr), maxstate(0), saved_entries(0), forward_mode(SAVED_IDS), forward_round(0)
 {
-  comm_forward = 1;
+  if (narg != 4 && narg != 5) error->all(FLERR, "Illegal fix PAIR_STATE command");
+  layout.choose(dnum, narg == 5 ? utils::inumeric(FLERR, arg[4], false, lmp) : 0);
+  row = layout.row;
+  slots.set_row(row);
+  dnum = layout.saved();    // FixNeighHistory's per-atom copies: the saved doubles
+  dnumbytes = dnum * sizeof(double);
+  comm_forward = 1 + PER_ROUND * (dnum + 1);    // the partner rounds; the saved IDs take 1
   memory->create(saved_id, atom->nmax, "pair_state:saved_id");
   for (int i = 0; i < atom->nmax; i++) saved_id[i] = 0;
 }
@@ -51,25 +57,61 @@ int FixPairState::setmask()
    copy the neighbour data to the atoms; my atoms remember their IDs
 ------------------------------------------------------------------------- */
 
-// a pair's word rides in the last of its doubles: the base class keeps only a flag
-static int word_of(const double *values, int dnum)
-{
-  return static_cast<int>(fabs(values[dnum - 1]));
-}
-
 void FixPairState::save()
 {
   const NeighList *list = pair->list;
   if (list)
     for (int ii = 0; ii < list->inum; ii++) {
       const int i = list->ilist[ii];
-      for (int jj = 0; jj < list->numneigh[i]; jj++)
-        if (firstflag[i][jj]) firstvalue[i][dnum * jj + dnum - 1] = firstflag[i][jj];
+      for (int jj = 0; jj < nstate[i]; jj++)
+        if (firstflag[i][jj]) {
+          double *v = slots.all()[i][jj] ? slots.all()[i][jj] : claim(i, jj);
+          v[row - 1] = firstflag[i][jj];
+        }
     }
-  FixNeighHistory::pre_exchange();
+  save_one_copy();
   maxexchange += 1;    // saved_id
   const tagint *tag = atom->tag;
   for (int i = 0; i < nlocal_neigh; i++) saved_id[i] = tag[i];
+}
+
+// each pair's state once, at the atom its list puts first (an owned atom; with newton off a
+// pair with a ghost is listed on both processors, and the one whose atom has the smaller ID
+// keeps it); FixNeighHistory::pre_exchange() keeps it at both atoms.  The next list build finds
+// it at either atom (restore())
+void FixPairState::save_one_copy()
+{
+  ipage_atom->reset();
+  dpage_atom->reset();
+  const int nall = atom->nlocal + atom->nghost;
+  for (int i = 0; i < std::max(nall_neigh, nall); i++) npartner[i] = 0;
+  const tagint *tag = atom->tag;
+  const NeighList *list = pair->list;
+  const auto keeps = [&](int i, int jj) {
+    const int j = list->firstneigh[i][jj] & NEIGHMASK;
+    return firstflag[i][jj] && (newton_pair || j < nlocal_neigh || tag[i] <= tag[j]);
+  };
+  saved_entries = 0;
+  for (int ii = 0; ii < list->inum; ii++) {
+    const int i = list->ilist[ii];
+    int n = 0;
+    for (int jj = 0; jj < nstate[i]; jj++) n += keeps(i, jj);
+    partner[i] = ipage_atom->get(n);
+    valuepartner[i] = dpage_atom->get(dnum * n);
+    if (!partner[i] || !valuepartner[i])
+      error->one(FLERR, "Neighbor history overflow, boost neigh_modify one");
+    for (int jj = 0; jj < nstate[i]; jj++)
+      if (keeps(i, jj)) {
+        const int m = npartner[i]++;
+        partner[i][m] = tag[list->firstneigh[i][jj] & NEIGHMASK];
+        layout.to_saved(slots.all()[i][jj], valuepartner[i] + dnum * m);
+      }
+    saved_entries += n;
+  }
+  maxpartner = 0;
+  for (int i = 0; i < nlocal_neigh; i++) maxpartner = std::max(maxpartner, npartner[i]);
+  maxexchange = (dnum + 1) * maxpartner + 1;
+  for (int i = nlocal_neigh; i < atom->nlocal; i++) npartner[i] = 0;
 }
 
 void FixPairState::setup(int)
@@ -122,10 +164,11 @@ void FixPairState::write_restart(FILE *fp)
 
 void FixPairState::post_neighbor()
 {
-  if (update->setupflag) relabel_partners();
+  PairStateAudit audit(lmp, *this);
+  if (update->setupflag) audit.relabel_partners();
   restore();
   nds_current = 1;
-  check_lost_links();
+  audit.check_lost_links();
 }
 
 // FixNeighHistory::post_neighbor() (its pair style keeps every listed pair, beyond_contact),
@@ -138,19 +181,18 @@ void FixPairState::restore()
   nall_neigh = nall;
   if (maxatom < nlocal) {
     memory->sfree(firstflag);
-    memory->sfree(firstvalue);
     maxatom = nall;
     firstflag = (int **) memory->smalloc(maxatom * sizeof(int *), "neighbor_history:firstflag");
-    firstvalue =
-        (double **) memory->smalloc(maxatom * sizeof(double *), "neighbor_history:firstvalue");
   }
   if (maxstate < nlocal) {
     maxstate = nall;
     memory->destroy(nstate);
     memory->create(nstate, maxstate, "pair_state:nstate");
+    slots.grow(maxstate);
   }
   ipage_neigh->reset();
   dpage_neigh->reset();
+  slots.renew();
 
   const tagint *tag = atom->tag;
   const bool all = reach.empty();
@@ -158,20 +200,26 @@ void FixPairState::restore()
   double *const *x = atom->x;
   const double skin = neighbor->skin;
   NeighList *list = pair->list;
-  std::vector<int> kept, found, rest;    // the list's entries that keep doubles, their partner
+  forward_partners();
+  std::vector<int> kept, rest;    // the list's entries that keep doubles, and the others
+  std::vector<const double *> found;    // the kept ones' saved states (null: none)
+  std::vector<int> turned;              // found at the other atom: seen from it
+  std::vector<double> seen(row);        // such a state as its other atom saw it
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];
     int *jlist = list->firstneigh[i];
     const int jnum = list->numneigh[i];
     kept.clear();
     found.clear();
+    turned.clear();
     rest.clear();
     for (int jj = 0; jj < jnum; jj++) {
       const int j = jlist[jj] & HISTMASK;    // the history bit of a size list means nothing here
       const int jn = j & NEIGHMASK;
-      int m = 0;
-      while (m < npartner[i] && partner[i][m] != tag[jn]) m++;
-      bool near = m < npartner[i] || all;
+      int round = 0;
+      const double *saved = saved_state(i, tag[jn]);
+      if (!saved && (saved = saved_state(holder(jn), tag[i]))) round = 1;
+      bool near = saved || all;
       if (!near) {
         const double dx = x[jn][0] - x[i][0], dy = x[jn][1] - x[i][1], dz = x[jn][2] - x[i][2];
         const double far = reach[type[i]] + reach[type[jn]] + skin;
@@ -179,24 +227,81 @@ void FixPairState::restore()
       }
       if (near) {
         kept.push_back(j);
-        found.push_back(m);
+        found.push_back(saved);
+        turned.push_back(round);
       } else rest.push_back(j);
     }
     const int nkept = kept.size();
     std::copy(kept.begin(), kept.end(), jlist);
     std::copy(rest.begin(), rest.end(), jlist + nkept);
     nstate[i] = nkept;
-    int *flags = firstflag[i] = ipage_neigh->get(jnum);
-    double *values = firstvalue[i] = dpage_neigh->get(nkept * dnum);
-    for (int jj = 0; jj < jnum; jj++) flags[jj] = 0;
+    int *flags = firstflag[i] = ipage_neigh->get(nkept);    // the rest's words are 0
+    for (int jj = 0; jj < nkept; jj++) flags[jj] = 0;
+    // doubles for the pairs with a saved state; the others claim theirs when they need them
+    int nfound = 0;
+    for (const double *saved : found) nfound += saved != nullptr;
+    double *v = dpage_neigh->get(nfound * row);
+    if (!v) error->one(FLERR, "Neighbor history overflow, boost neigh_modify one");
+    double **slot = slots.of(i, nkept);
     for (int jj = 0; jj < nkept; jj++) {
-      double *v = values + dnum * jj;
-      if (found[jj] < npartner[i]) {
-        memcpy(v, valuepartner[i] + dnum * found[jj], dnumbytes);
-        flags[jj] = word_of(v, dnum);
-      } else memcpy(v, zeroes, dnumbytes);
+      slot[jj] = found[jj] ? v : nullptr;
+      if (!found[jj]) continue;
+      const int jn = kept[jj] & NEIGHMASK;
+      if (!turned[jj]) layout.to_row(found[jj], v);
+      else {
+        layout.to_row(found[jj], seen.data());
+        if (pair->nondefault_history_transfer)
+          pair->transfer_history(seen.data(), v, type[jn], type[i]);
+        else
+          for (int k = 0; k < row; k++) v[k] = -seen[k];
+      }
+      flags[jj] = PairStateLayout::word(v, row);
+      v += row;
     }
   }
+}
+
+// the doubles of a pair that had none since the list was built, zeroed
+double *FixPairState::claim(int i, int jj)
+{
+  double *v = slots.claim(i, jj);
+  if (!v) error->one(FLERR, "Neighbor history overflow, boost neigh_modify one");
+  return v;
+}
+
+// atom i's saved state of its pair with the atom of ID partner_id, seen from i (null: none)
+const double *FixPairState::saved_state(int i, tagint partner_id) const
+{
+  for (int m = 0; m < npartner[i]; m++)
+    if (partner[i][m] == partner_id) return valuepartner[i] + dnum * m;
+  return nullptr;
+}
+
+// the atom whose saved states atom j's are: j, or the owned atom a ghost is an image of (with
+// an atom map)
+int FixPairState::holder(int j) const
+{
+  if (j < atom->nlocal || atom->map_style == Atom::MAP_NONE) return j;
+  const int m = atom->map(atom->tag[j]);
+  return m >= 0 && m < atom->nlocal ? m : j;
+}
+
+// the ghosts' saved states from their owners (a pair the new list turned round is kept at its
+// other atom, which may be a ghost now), PER_ROUND of each atom's per forward communication;
+// a ghost that is an image of an owned atom (holder()) keeps none: on one processor no ghost
+// needs them
+void FixPairState::forward_partners()
+{
+  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
+  for (int i = nlocal; i < nall; i++) npartner[i] = 0;
+  if (comm->nprocs == 1 && atom->map_style != Atom::MAP_NONE) return;
+  int most = 0, most_all;
+  for (int i = 0; i < nlocal; i++) most = std::max(most, npartner[i]);
+  MPI_Allreduce(&most, &most_all, 1, MPI_INT, MPI_MAX, world);
+  forward_mode = PARTNERS;
+  for (forward_round = 0; forward_round * PER_ROUND < most_all; forward_round++)
+    comm->forward_comm(this);
+  forward_mode = SAVED_IDS;
 }
 
 void FixPairState::forget()
@@ -205,6 +310,7 @@ void FixPairState::forget()
     npartner[i] = 0;
     saved_id[i] = 0;
   }
+  saved_entries = 0;
 }
 
 const tagint *FixPairState::forward_saved_ids()
@@ -213,116 +319,9 @@ const tagint *FixPairState::forward_saved_ids()
   return saved_id;
 }
 
-void FixPairState::relabel_partners()
-{
-  const int nlocal = atom->nlocal;
-  const tagint *tag = atom->tag;
-  // an atom renumbered since the save, or one created since (saved ID 0): it may hold the ID
-  // of an atom deleted since, to which saved partners still point (delete_atoms, then
-  // create_atoms, gives the freed highest IDs out again)
-  int changed = 0, any;
-  for (int i = 0; i < nlocal && !changed; i++)
-    if ((npartner[i] && saved_id[i] != tag[i]) || !saved_id[i]) changed = 1;
-  MPI_Allreduce(&changed, &any, 1, MPI_INT, MPI_MAX, world);
-  if (!any) return;
-
-  // old ID -> new ID: of my atoms and ghosts, then of the others' atoms for the rest
-  forward_saved_ids();
-  const int nall = nlocal + atom->nghost;
-  std::unordered_map<tagint, tagint> renamed(2 * nall);
-  for (int i = 0; i < nall; i++)
-    if (saved_id[i]) renamed.emplace(saved_id[i], tag[i]);
-  std::vector<tagint> unknown;
-  for (int i = 0; i < nlocal; i++)
-    for (int m = 0; m < npartner[i]; m++)
-      if (!renamed.count(partner[i][m])) unknown.push_back(partner[i][m]);
-  std::sort(unknown.begin(), unknown.end());
-  unknown.erase(std::unique(unknown.begin(), unknown.end()), unknown.end());
-  const std::vector<tagint> asked = allgatherv(unknown, MPI_LMP_TAGINT, world);
-  const int ntotal = asked.size();
-  std::vector<tagint> mine(ntotal, 0), answer(ntotal);
-  std::unordered_map<tagint, tagint> owned(2 * nlocal);
-  for (int i = 0; i < nlocal; i++)
-    if (saved_id[i]) owned.emplace(saved_id[i], tag[i]);
-  for (int k = 0; k < ntotal; k++) {
-    const auto it = owned.find(asked[k]);
-    if (it != owned.end()) mine[k] = it->second;
-  }
-  MPI_Allreduce(mine.data(), answer.data(), ntotal, MPI_LMP_TAGINT, MPI_MAX, world);
-  for (int k = 0; k < ntotal; k++) renamed.emplace(asked[k], answer[k]);    // 0: deleted
-  for (int i = 0; i < nlocal; i++) {
-    for (int m = 0; m < npartner[i]; m++) partner[i][m] = renamed[partner[i][m]];
-    if (saved_id[i]) saved_id[i] = tag[i];
-  }
-}
-
-void FixPairState::check_lost_links()
-{
-  const int nlocal = atom->nlocal;
-  const NeighList *list = pair->list;
-  double mine[2] = {0.0, 0.0}, all[2];    // partner entries of my atoms, links in my list
-  for (int i = 0; i < nlocal; i++) mine[0] += npartner[i];
-  for (int ii = 0; ii < list->inum; ii++) {
-    const int i = list->ilist[ii];
-    for (int jj = 0; jj < list->numneigh[i]; jj++)
-      if (firstflag[i][jj])
-        mine[1] += newton_pair || (list->firstneigh[i][jj] & NEIGHMASK) < nlocal ? 1.0 : 0.5;
-  }
-  MPI_Allreduce(mine, all, 2, MPI_DOUBLE, MPI_SUM, world);
-  if (all[0] <= 2.0 * all[1] + 0.25) return;
-
-  // partner entries whose atom no longer exists (0: deleted while IDs were renumbered)
-  const tagint *tag = atom->tag;
-  std::unordered_set<tagint> here(tag, tag + nlocal + atom->nghost), owned(tag, tag + nlocal);
-  std::vector<tagint> away;
-  double gone = 0.0;
-  for (int i = 0; i < nlocal; i++)
-    for (int m = 0; m < npartner[i]; m++) {
-      if (partner[i][m] == 0) gone += 1.0;
-      else if (!here.count(partner[i][m])) away.push_back(partner[i][m]);
-    }
-  const std::vector<tagint> asked = allgatherv(away, MPI_LMP_TAGINT, world);
-  const int ntotal = asked.size();
-  std::vector<int> exists(ntotal, 0), found(ntotal);
-  for (int k = 0; k < ntotal; k++) exists[k] = owned.count(asked[k]) ? 1 : 0;
-  MPI_Allreduce(exists.data(), found.data(), ntotal, MPI_INT, MPI_MAX, world);
-  std::unordered_set<tagint> deleted;
-  for (int k = 0; k < ntotal; k++)
-    if (!found[k]) deleted.insert(asked[k]);
-  for (const tagint t : away)
-    if (deleted.count(t)) gone += 1.0;
-  double gone_all;
-  MPI_Allreduce(&gone, &gone_all, 1, MPI_DOUBLE, MPI_SUM, world);
-
-  const double lost = 0.5 * (all[0] - 2.0 * all[1] - gone_all);    // links, not ends
-  if (lost > 0.25 && update->setupflag)
-    error->all(FLERR, "{}: {:.0f} links left the neighbour list unbroken (fix {}): their atoms "
-               "are farther apart than the list's cutoff before this run: atoms were moved since "
-               "the last run (displace_atoms, set, change_box, read_dump ...) or linked pairs "
-               "excluded (neigh_modify exclude); move them less, keep linked pairs in the list, "
-               "or restart the links (pair_style anew)", owner ? owner->who() : "Pair state",
-               lost, id);
-  if (lost > 0.25) {
-    const std::string why = owner ? owner->lost_links_explained() : std::string();
-    error->all(FLERR, "{}: {:.0f} links left the neighbour list unbroken (fix {}): {}their atoms "
-               "are farther apart than the list's cutoff; raise the neighbor skin or comm_modify "
-               "cutoff{}, and do not exclude linked pairs (neigh_modify exclude)",
-               owner ? owner->who() : "Pair state", lost, id, why.empty() ? "" : why + "; else ",
-               update->whichflag == 2 ? " or reduce min_modify dmax (a line search's trial "
-               "point moved them)" : "");
-  }
-  if (gone_all > 0.0 && comm->me == 0)
-    utils::logmesg(lmp, "{}: {:.0f} links ended with their deleted atoms\n",
-                   owner ? owner->who() : "Pair state", gone_all);
-}
-
 bigint FixPairState::count_saved_links()
 {
-  bigint mine = 0, all;
-  for (int i = 0; i < atom->nlocal; i++)
-    for (int m = 0; m < npartner[i]; m++) mine += word_of(valuepartner[i] + dnum * m, dnum) & 1;
-  MPI_Allreduce(&mine, &all, 1, MPI_LMP_BIGINT, MPI_SUM, world);
-  return all / 2;
+  return PairStateAudit(lmp, *this).count_saved_links();
 }
 
 /* ----------------------------------------------------------------------
@@ -361,47 +360,95 @@ int FixPairState::unpack_exchange(int nlocal, double *buf)
   return m;
 }
 
+// FixNeighHistory's record, the saved ID, and ONE_COPY: each pair is saved once (a record
+// without it, from before, holds each pair at both atoms)
 int FixPairState::pack_restart(int i, double *buf)
 {
   int m = FixNeighHistory::pack_restart(i, buf);
   buf[m++] = ubuf(saved_id[i]).d;
+  buf[m++] = PairStateLayout::ONE_COPY;
   buf[0] = m;
   return m;
 }
 
 void FixPairState::unpack_restart(int nlocal, int nth)
 {
-  FixNeighHistory::unpack_restart(nlocal, nth);
+  if (ipage_atom == nullptr) allocate_pages();
   double **extra = atom->extra;
   int m = 0;
   for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
-  m += static_cast<int>(extra[nlocal][m]) - 1;    // the last value of my record
-  saved_id[nlocal] = (tagint) ubuf(extra[nlocal][m]).i;
+  const double *record = extra[nlocal] + m;
+  const int length = static_cast<int>(record[0]), n = static_cast<int>(record[1]);
+  const PairStateLayout::Record kind = layout.record(length, n, record[length - 1]);
+  if (kind == PairStateLayout::UNKNOWN)
+    error->one(FLERR, "Fix {}: a restart record of {} values for {} pairs of {} doubles: the "
+               "file was written by another pair style or plugin", id, length, n, row - 1);
+  saved_id[nlocal] = layout.owner_id(record + 2, n, kind);
+  partner[nlocal] = ipage_atom->get(n);
+  valuepartner[nlocal] = dpage_atom->get(dnum * n);
+  npartner[nlocal] =
+      layout.read(record + 2, n, kind, saved_id[nlocal], partner[nlocal], valuepartner[nlocal]);
+  maxpartner = std::max(maxpartner, npartner[nlocal]);
+  saved_entries += npartner[nlocal];
 }
 
 int FixPairState::size_restart(int nlocal)
 {
-  return FixNeighHistory::size_restart(nlocal) + 1;
+  return FixNeighHistory::size_restart(nlocal) + 2;
 }
 
 int FixPairState::maxsize_restart()
 {
-  return FixNeighHistory::maxsize_restart() + 1;
+  return FixNeighHistory::maxsize_restart() + 2;
 }
 
 int FixPairState::pack_forward_comm(int n, int *list, double *buf, int, int *)
 {
-  for (int k = 0; k < n; k++) buf[k] = ubuf(saved_id[list[k]]).d;
-  return n;
+  if (forward_mode == SAVED_IDS) {
+    for (int k = 0; k < n; k++) buf[k] = ubuf(saved_id[list[k]]).d;
+    return n;
+  }
+  int m = 0;
+  for (int k = 0; k < n; k++) {
+    const int i = holder(list[k]), first = forward_round * PER_ROUND;
+    if (first == 0) buf[m++] = npartner[i];
+    for (int e = first; e < std::min(npartner[i], first + PER_ROUND); e++) {
+      buf[m++] = ubuf(partner[i][e]).d;
+      memcpy(buf + m, valuepartner[i] + dnum * e, dnumbytes);
+      m += dnum;
+    }
+  }
+  return m;
 }
 
 void FixPairState::unpack_forward_comm(int n, int first, double *buf)
 {
-  for (int k = 0; k < n; k++) saved_id[first + k] = (tagint) ubuf(buf[k]).i;
+  if (forward_mode == SAVED_IDS) {
+    for (int k = 0; k < n; k++) saved_id[first + k] = (tagint) ubuf(buf[k]).i;
+    return;
+  }
+  int m = 0;
+  for (int g = first; g < first + n; g++) {
+    const int from = forward_round * PER_ROUND;
+    const bool kept = holder(g) == g;    // an image of an owned atom keeps none
+    if (from == 0) {
+      npartner[g] = static_cast<int>(buf[m++]);
+      partner[g] = kept ? ipage_atom->get(npartner[g]) : nullptr;
+      valuepartner[g] = kept ? dpage_atom->get(dnum * npartner[g]) : nullptr;
+      if (kept && (!partner[g] || !valuepartner[g]))
+        error->one(FLERR, "Neighbor history overflow, boost neigh_modify one");
+    }
+    for (int e = from; e < std::min(npartner[g], from + PER_ROUND); e++, m += 1 + dnum)
+      if (kept) {
+        partner[g][e] = (tagint) ubuf(buf[m]).i;
+        memcpy(valuepartner[g] + dnum * e, buf + m + 1, dnumbytes);
+      }
+  }
 }
 
 double FixPairState::memory_usage()
 {
   return FixNeighHistory::memory_usage() + (double) atom->nmax * sizeof(tagint) +
-      (double) maxstate * sizeof(int);
+      (double) maxstate * (sizeof(int) + sizeof(double **)) +
+      slots.bytes();
 }

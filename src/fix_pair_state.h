@@ -4,8 +4,14 @@
    NEIGH_HISTORY is: the pair state creates it at the first init.
 
    It is fix neigh/history (a flag and dnum values per neighbour pair, kept
-   across list builds by atom IDs) made safe for everything LAMMPS does to
-   atoms between and inside runs:
+   across list builds by atom IDs) storing each pair's saved state once, and
+   made safe for everything LAMMPS does to atoms between and inside runs:
+   - a save keeps each pair at the atom its list put first (fix
+     neigh/history keeps it at both atoms); the next list build looks at both
+     atoms, the ghosts' saved pairs sent from their owners first, and turns
+     a pair found at its other atom round (transfer_history()); the owner's
+     doubles that hold only within a compute are not saved (a bit mask, the
+     fix's fifth argument): dnum is the saved entry's width, row the list's;
    - the neighbour data are saved to the atoms only while they describe the
      current atoms (from a list build or a run's setup to the end of the
      run): write_restart after a run no longer saves from a list whose ghost
@@ -29,14 +35,18 @@
      first in each atom's list the pairs that keep doubles: those with a
      saved state and those closer than the types' reaches plus the skin, which
      may touch before the next build (as the list's own cutoff plus skin
-     holds every pair that may interact); the pairs beyond keep a word (0)
-     and no doubles, and the pair style's passes skip them.
+     holds every pair that may interact); the pairs beyond keep no word (it
+     is 0) and no doubles, and the pair style's passes skip them; of the
+     kept pairs only those with a saved state get doubles at the build, the
+     others when a pass claims them (claim()).
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_CLUSTERDYN_FIX_PAIR_STATE_H
 #define LMP_CLUSTERDYN_FIX_PAIR_STATE_H
 
 #include "fix_neigh_history.h"
+#include "pair_state_layout.h"
+#include "pair_state_slots.h"
 
 #include <string>
 #include <vector>
@@ -81,17 +91,31 @@ namespace ClusterDyn {
     void keep_state_within(const std::vector<double> &per_type) { reach = per_type; }
     // per atom of the list: how many of its first listed pairs keep doubles
     const int *state_counts() const { return nstate; }
+    // per atom of the list: the doubles of each of those pairs (null: none yet)
+    double **const *state_slots() const { return slots.all(); }
+    double *claim(int i, int jj);    // pair jj of atom i's list gets its doubles, zeroed
 
    private:
+    friend class PairStateAudit;    // reads and relabels the saved pairs
     tagint *saved_id;           // per atom: its ID when its partners were saved; 0 = fresh
     int nds_current;            // the neighbour data describe the current atoms
     std::vector<double> reach;    // keep_state_within()
     int *nstate;                // state_counts(), maxstate of them
     int maxstate;
+    bigint saved_entries;       // pairs my atoms held after the last save or restart
+    // forward communication: the saved IDs, or the saved pairs PER_ROUND at a time
+    enum { SAVED_IDS, PARTNERS };
+    static constexpr int PER_ROUND = 1;
+    int forward_mode, forward_round;
+    int row;                              // doubles per pair in the list (the word's last)
+    PairStateLayout layout;               // the list's rows and the saved doubles
+    PairStateSlots slots;                 // state_slots(), maxstate of them
     void save();
-    void relabel_partners();    // IDs changed since the save: partners follow
+    void save_one_copy();
+    const double *saved_state(int i, tagint partner_id) const;
+    int holder(int j) const;
+    void forward_partners();
     void restore();             // the saved states into the new list (FixNeighHistory's, sorted)
-    void check_lost_links();
   };
 
 }    // namespace ClusterDyn

@@ -230,9 +230,9 @@ double FixViscousRelative::compute_forces(int vflag)
 // the pairs damped: those of our list within the damping range, or the pair style's links
 DampingBonds FixViscousRelative::current_bonds() const
 {
-  if (!state) return {list, nullptr};
+  if (!state) return {list, nullptr, nullptr};
   const StateView view = state->view();    // made at the setup, before the fix's setup
-  return {view.list, view.words};
+  return {view.list, view.words, view.counts};
 }
 
 /* ---------------------------------------------------------------------- */

@@ -32,7 +32,6 @@ McaElementEos::McaElementEos(LAMMPS *lmp, McaExchange &exchange) :
 McaElementEos::~McaElementEos()
 {
   memory->destroy(sums);
-  memory->destroy(pressures);
   memory->destroy(heat);
   // the elements' state goes with the style (a new pair_style starts afresh), as pair
   // granular's history
@@ -86,16 +85,15 @@ void McaElementEos::grow(int nmax_atoms)
   if (nmax_atoms <= nmax) return;
   nmax = nmax_atoms;
   memory->destroy(sums);
-  memory->destroy(pressures);
   memory->destroy(heat);
   memory->create(heat, nmax, 1, "pair:eos_heat");
   memory->create(sums, nmax, SUMS, "pair:eos_sums");
-  memory->create(pressures, nmax, FORWARD, "pair:eos_pressures");
+  pressures = sums;    // finish() reads an element's sums before it writes its pressures
 }
 
 double McaElementEos::memory_usage() const
 {
-  return (double) nmax * (SUMS + FORWARD + 1) * sizeof(double);
+  return (double) nmax * (SUMS + 1) * sizeof(double);
 }
 
 double McaElementEos::volume(int i) const
@@ -214,7 +212,7 @@ bool McaElementEos::advance_element(int i, Advance how, double dt)
     atom->dvector[heated][i] = 0.0;    // no pressure: the heat is in u alone
     return false;
   }
-  double *out = pressures[i];
+  double *out = pressures[i];    // the row of s, which is read no more
   const double sym[6] = {grad[0][0], grad[1][1], grad[2][2], 0.5 * (grad[0][1] + grad[1][0]),
                          0.5 * (grad[0][2] + grad[2][0]), 0.5 * (grad[1][2] + grad[2][1])};
   for (int k = 0; k < 6; k++) out[GRADIENT + k] = sym[k];

@@ -163,6 +163,8 @@ namespace ClusterDyn {
 
    private:
     McaExchange &exchange;
+    // per element (owned and ghost): the sums over its links (begin() to finish()), then in
+    // the same rows the columns sent to ghosts (finish() to the next begin())
     double **sums, **pressures, **heat;
     int nmax;
     double fraction;

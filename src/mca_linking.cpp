@@ -46,16 +46,19 @@ void McaLinking::make(const NeighList *list, const StatePass &pass, const McaTyp
   walk_pairs(list, pass, [&](int i, int j, int jj) {
     int &word = pass.words[i][jj];
     if (!pass.fresh[i] || !pass.fresh[j]) {
-      double *v = pass.pair_values(i, jj);
       const McaPairFrame p(atom->x, i, j);
       const double r = sqrt(p.rsq);
       if (r == 0.0) coincident_elements(lmp, i, j);
       const double rsum = radius[i] + radius[j];
       word = r < reach * rsum && types.model(type[i], type[j]).links ? 1 : 0;
       if (word && r < 0.5 * rsum) deep += newton || j < nlocal ? 1.0 : 0.5;
-      for (int k = 0; k < C::NVALUES; k++) v[k] = 0.0;
-      v[C::REF] = r;
-      for (int k = 0; k < 3; k++) v[C::DPREV + k] = p.d[k];
+      // a pair left unlinked keeps no doubles (a contact claims its own)
+      double *v = word ? pass.claim(i, jj) : pass.pair_values(i, jj);
+      if (v) {
+        for (int k = 0; k < C::NVALUES; k++) v[k] = 0.0;
+        v[C::REF] = r;
+        for (int k = 0; k < 3; k++) v[C::DPREV + k] = p.d[k];
+      }
     }
     if (state_now(word)) {
       zcount[i][0] += 1.0;
@@ -71,14 +74,17 @@ void McaLinking::make(const NeighList *list, const StatePass &pass, const McaTyp
   exchange.to_owners(zcount, 1);
   exchange.to_ghosts(zcount, 1);
   areas(list, pass, fraction);
+  memory->destroy(zcount);    // needed again only at the next setup that links
+  nmax = 0;
 }
 
 void McaLinking::areas(const NeighList *list, const StatePass &pass, double fraction)
 {
   const double *radius = atom->radius;
   walk_pairs(list, pass, [&](int i, int j, int jj) {
+    if (!state_now(pass.words[i][jj])) return;
     double *v = pass.pair_values(i, jj);
-    if (!state_now(pass.words[i][jj]) || v[C::AREA] != 0.0) return;
+    if (v[C::AREA] != 0.0) return;
     const int dim = domain->dimension;
     const double si = McaElement::area_share(McaElement::volume(radius[i], fraction, dim),
                                              zcount[i][0], radius[i], dim);

@@ -46,6 +46,8 @@ PairMCA::PairMCA(LAMMPS *lmp) :
   manybody_flag = 1;
   nondefault_history_transfer = 1;
   beyond_contact = 1;    // fix neigh/history keeps every listed pair's state, not only contacts
+  // the plastic trial, the step's motion and slide: written by the passes before they are read
+  state.within_compute({C::SIG, C::DR, C::DTAU});
   // the most columns a component sends to ghosts or sums onto owners (PairColumnExchange)
   comm_forward = std::max<int>(McaPlasticity::COLUMNS, McaElementEos::FORWARD);
   comm_reverse = std::max<int>(std::max<int>(McaElementStress::COLUMNS, McaManybody::NCHANGES),
@@ -261,7 +263,8 @@ void PairMCA::pair_forces(const StatePass &pass, StateTally &changes)
       if (eflag_either) out.evdwl += link.intact * ehg;
     } else {
       McaUnlinkedPair(ri, rj, contact, a, p.r, domain->dimension)
-          .step(model, word, pass.trial, v, p, turning, a, vel, omega, dt, tally, eflag_either, out);
+          .step(model, word, pass.trial, pass.claim(i, jj), p, turning, a, vel, omega, dt, tally,
+                eflag_either, out);
     }
 
     double ti[3];

@@ -11,7 +11,6 @@
 #include "comm.h"
 #include "error.h"
 #include "fix.h"
-#include "force.h"
 #include "modify.h"
 #include "neigh_list.h"
 #include "output.h"
@@ -32,7 +31,8 @@ static Fix *create_fix_pair_state(LAMMPS *lmp, int narg, char **arg)
 }
 
 PairState::PairState(LAMMPS *lmp, Pair *owner_pair, const std::string &who, int nv, int nw) :
-    Pointers(lmp), pair(owner_pair), name(who), nvalues(nv), nwork(nw), enabled(0), made_flag(0), afresh(0),
+    Pointers(lmp), pair(owner_pair), name(who), nvalues(nv), nwork(nw), within(0), enabled(0),
+    made_flag(0), afresh(0),
     fix(nullptr), pending_step(-1), trial_now(0)
 {
 }
@@ -110,7 +110,7 @@ void PairState::init()
                  "afresh", name, placeholder());
     (*modify->fix_map)["PAIR_STATE"] = &create_fix_pair_state;
     fix = dynamic_cast<FixPairState *>(modify->replace_fix(
-        placeholder(), fmt::format("{} all PAIR_STATE {}", FIX_ID, nvalues + 1), 0));
+        placeholder(), fmt::format("{} all PAIR_STATE {} {}", FIX_ID, nvalues + 1, within), 0));
     modify->fix_map->erase("PAIR_STATE");
     fix->pair = pair;
     fix->owner = this;
@@ -126,10 +126,6 @@ void PairState::init()
 // what the state fix (FixNeighHistory's scheme) needs from the commands around it
 void PairState::check_neighbours() const
 {
-  // the ghosts' states go home by a variable-size reverse comm, which comm_style tiled lacks
-  if (comm->style == Comm::TILED && force->newton_pair)
-    error->all(FLERR, "{}: the link state needs newton off under comm_style tiled (LAMMPS's "
-               "tiled communication cannot return it to the owners with newton on)", name);
   // the states are saved by neighbour-list index at pre_exchange: a fix that adds or deletes
   // atoms there must come after the state fix, which stands where pair_style was given
   const int me = modify->find_fix(FIX_ID);
@@ -151,6 +147,11 @@ void PairState::check_fix() const
 
 /* ---------------------------------------------------------------------- */
 
+double *StatePass::claim(int i, int jj) const
+{
+  return slots[i][jj] ? slots[i][jj] : store->claim(i, jj);
+}
+
 StatePass PairState::begin()
 {
   if (neighbor->ago == 0) check_single_images(lmp, name);    // the box may have changed
@@ -159,11 +160,11 @@ StatePass PairState::begin()
   pending_step = update->ntimestep;
   StatePass pass;
   pass.words = fix->firstflag;
-  pass.values = fix->firstvalue;
+  pass.slots = fix->state_slots();
+  pass.store = fix;
   pass.fresh = update->setupflag ? fix->forward_saved_ids() : nullptr;
   pass.counts = fix->state_counts();
   pass.trial = trial_now;
-  pass.stride = nvalues + 1;
   return pass;
 }
 
@@ -200,9 +201,10 @@ void PairState::settle_words(bool accept_trial)
 {
   const NeighList *list = pair->list;
   int *const *words = fix->firstflag;
+  const int *counts = fix->state_counts();
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];
-    for (int jj = 0; jj < list->numneigh[i]; jj++)
+    for (int jj = 0; jj < counts[i]; jj++)
       words[i][jj] = (words[i][jj] & WORD_KEPT) |
                      (accept_trial ? state_now(words[i][jj]) : words[i][jj] & 1);
   }
@@ -211,7 +213,7 @@ void PairState::settle_words(bool accept_trial)
 StateView PairState::view() const
 {
   check_fix();
-  return StateView{pair->list, fix->firstflag, fix->firstvalue, nvalues, nvalues + 1};
+  return StateView{pair->list, fix->firstflag, fix->state_counts()};
 }
 
 /* ---------------------------------------------------------------------- */

@@ -29,6 +29,7 @@
 
 #include <cstdio>
 #include <functional>
+#include <initializer_list>
 #include <string>
 #include <vector>
 
@@ -80,20 +81,25 @@ namespace ClusterDyn {
   // what one force evaluation reads and writes
   struct StatePass {
     int *const *words;          // per neighbour pair of the pair style's list
-    double *const *values;      // stride doubles per neighbour pair, nvalues of them the owner's
+    // per pair that may keep doubles (the first counts[i] of atom i's list): its nvalues + 1
+    // doubles (the owner's, then the word's slot), null where the pair has none yet (the
+    // pairs with no saved state get them when they claim them: claim())
+    double **const *slots;
+    FixPairState *store;
     const tagint *fresh;        // at a setup: per atom (own and ghost), 0 = fresh; else null
     const int *counts;          // per atom of the list: its first pairs that keep doubles
     int trial;                  // a minimizer's trial point: see state_word()
-    int stride;
-    double *pair_values(int i, int jj) const { return values[i] + stride * jj; }
+    double *pair_values(int i, int jj) const { return slots[i][jj]; }
+    // the pair's doubles, zeroed if it had none (not thread-safe: the passes of pair mca)
+    double *claim(int i, int jj) const;
   };
 
-  // what the computes read: the state of pair jj of atom i is state_now(words[i][jj])
+  // what the computes read: the state of pair jj of atom i is state_now(words[i][jj]) for the
+  // first counts[i] pairs of its list (which hold every link), 0 for the rest
   struct StateView {
     const NeighList *list;
     int *const *words;          // null on a processor that has had no atoms
-    double *const *values;
-    int nvalues, stride;
+    const int *counts;
   };
 
   class PairState : protected Pointers {
@@ -109,6 +115,12 @@ namespace ClusterDyn {
     // build keep no doubles and word 0 until the next build: the owner's pairs of those types
     // never link or touch farther apart; empty (the default): every listed pair keeps them
     void keep_state_within(std::vector<double> per_type) { reach = std::move(per_type); }
+    // the owner's doubles (indices) that hold only within a compute (written before they are
+    // read in each): not saved, zero after a list build
+    void within_compute(std::initializer_list<int> indices)
+    {
+      for (const int k : indices) within |= 1 << k;
+    }
     void init();               // init_style(): the fix replaces its placeholder
     StatePass begin();         // start of compute()
     void end(const StateTally &pass, double *tally_out);    // tally_out: 3 + nwork (pvector)
@@ -143,6 +155,7 @@ namespace ClusterDyn {
     std::string name;          // the pair style, for messages
     std::function<std::string()> lost_links;    // explain_lost_links()
     int nvalues, nwork;
+    int within;                // within_compute(): a bit per index
     std::vector<double> reach;    // keep_state_within()
     int enabled, made_flag;
     int afresh;                // re-issued before the fix was made: forget restored links

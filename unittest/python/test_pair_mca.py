@@ -10,6 +10,7 @@ runs; a straight run against a restarted one.  The table of hostile input
 (conftest.InputTable)."""
 import math
 import os
+import pathlib
 import sys
 
 import numpy as np
@@ -19,6 +20,7 @@ from conftest import (MCA_FCC_BLOCK, OK, PLUGIN, InputTable, check_input, last_t
 from lammps import LMP_STYLE_ATOM, LMP_STYLE_GLOBAL, LMP_TYPE_ARRAY, LMP_TYPE_VECTOR
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+DATA = pathlib.Path(HERE) / "data"
 sys.path.insert(0, os.path.join(HERE, "..", "..", "examples", "mca-elastic"))
 import elastic  # noqa: E402
 
@@ -323,12 +325,21 @@ def positions(out_dir):
     return data[np.argsort(data[:, 0])]
 
 
-@pytest.mark.parametrize("nprocs,newton", [(2, "on"), (4, "on"), (1, "off"), (2, "off")])
-def test_mpi_and_newton(tmp_path, nprocs, newton):
-    """A hot block after 1000 steps: positions and spins agree with a serial newton-on run to
-    1e-10 (relative to the displacements)."""
-    def tail(newton):
-        return (f"plugin load {PLUGIN}\n" + MCA_FCC_BLOCK.format(newton=newton, dt=0.02) +
+@pytest.mark.parametrize("nprocs,newton,tiled", [(2, "on", False), (4, "on", False),
+                                                 (1, "off", False), (2, "off", False),
+                                                 (2, "on", True), (3, "off", True)])
+def test_mpi_and_newton(tmp_path, nprocs, newton, tiled):
+    """A hot block after 1000 steps (a list build every 10): positions and spins agree with a
+    serial newton-on run to 1e-10 (relative to the displacements), also under comm_style tiled
+    with an rcb partition (the pair states found at a ghost's owner by forward communication)."""
+    def tail(newton, tiled=False):
+        block = MCA_FCC_BLOCK.format(newton=newton, dt=0.02)
+        if tiled:
+            block = block.replace("comm_modify vel yes\n",
+                                  "comm_style tiled\ncomm_modify vel yes\n") + "balance 1.0 rcb\n"
+        # a list build every 10 steps: each saves the pair states and finds them again (at a
+        # ghost's owner for the pairs a new list turns round)
+        return (f"plugin load {PLUGIN}\n" + block + "neigh_modify every 10 delay 0 check no\n"
                 "run 1000\nwrite_dump all custom final.txt id xu yu zu omegax omegay omegaz "
                 "modify sort id format float %.17g\n")
     ref_dir = tmp_path / "ref"
@@ -336,7 +347,8 @@ def test_mpi_and_newton(tmp_path, nprocs, newton):
     run_lmp(ref_dir, tail("on"))
     run_dir = tmp_path / "run"
     run_dir.mkdir()
-    run_lmp(run_dir, tail(newton), nprocs=nprocs)
+    out = run_lmp(run_dir, tail(newton, tiled), nprocs=nprocs)
+    assert not tiled or "rebalancing time" in out
     a, b = positions(ref_dir), positions(run_dir)
     assert np.abs(a[:, 1:4] - b[:, 1:4]).max() < 1e-10 * 0.05
     assert np.abs(a[:, 4:] - b[:, 4:]).max() <= 1e-10 * np.abs(a[:, 4:]).max()
@@ -356,6 +368,36 @@ def test_restart_continues_bit_identically(tmp_path):
             "neighbor 0.2 bin\nfix move all nve/sphere\ntimestep 0.02\nrun 300\n" + dump,
             name="in.second")
     assert np.array_equal(straight, positions(tmp_path))
+
+
+# a small, free, yielding block: MCA_FCC_BLOCK with free surfaces (shrink-wrapped), a yield
+# stress, and 200 steps
+TWO_COPIES_BLOCK = (MCA_FCC_BLOCK.format(newton="on", dt=0.02)
+                    .replace("boundary p p p", "boundary s s s")
+                    .replace("region box block 0 4 0 4 0 4", "region box block 0 2 0 2 0 1")
+                    .replace("poisson 0.4\n", "poisson 0.4 yield 0.001\n")
+                    .replace("velocity all create 1.0e-4", "velocity all create 3.0e-4")
+                    + "run 200\n")
+
+
+def test_restart_file_with_both_atoms_copies_continues(tmp_path):
+    """data/mca_two_copies.restart was written by TWO_COPIES_BLOCK (+ write_restart) with the
+    plugin of 28 Nov 2026 (commit 45f2f1e), which saved each pair's state at both its atoms;
+    each pair is saved once now.  Read back, the file continues as the uninterrupted run: 200
+    more steps end at its positions and spins (to 1e-12: the file was made on one CPU)."""
+    dump = ("write_dump all custom final.txt id x y z omegax omegay omegaz modify sort id "
+            "format float %.17g\n")
+    run_lmp(tmp_path, f"plugin load {PLUGIN}\n" + TWO_COPIES_BLOCK + "run 200\n" + dump,
+            name="in.straight")
+    straight = positions(tmp_path)
+    out = run_lmp(tmp_path, f"plugin load {PLUGIN}\nread_restart "
+                  f"{DATA / 'mca_two_copies.restart'}\ncomm_modify vel yes\nneighbor 0.2 bin\n"
+                  "fix move all nve/sphere\ntimestep 0.02\nrun 200\n" + dump, name="in.read")
+    read = positions(tmp_path)
+    assert "links ended" not in out and "left the neighbour list" not in out
+    assert read.shape == straight.shape == (38, 7)
+    assert np.abs(read[:, 1:4] - straight[:, 1:4]).max() < 1e-12
+    assert np.abs(read[:, 4:] - straight[:, 4:]).max() <= 1e-12 * np.abs(straight[:, 4:]).max()
 
 
 def test_write_data_keeps_materials_relinks(tmp_path):

@@ -398,8 +398,8 @@ row("link-thin-periodic-box", ["units lj", "region box block 0 2.25 -4 4 -4 4", 
                                "create_atoms 1 single 1.2 0 0 units box", "neighbor 0.3 bin"]
     + scene_pair("morse/spline", "cut 1.3 link 1.05"),
     [], r"the periodic box is 2\.25 wide along x, not more than twice")
-row("link-tiled-newton-on", SCENE_LINKED, ["comm_style tiled"],
-    r"the link state needs newton off under comm_style tiled")
+row("link-tiled-newton-on", SCENE_LINKED, ["comm_style tiled", "fix n all nve", "run 5 post no"],
+    OK)
 row("link-tiled-newton-off", scene_dimer() + ["newton off on", "comm_style tiled"]
     + scene_pair("morse/spline", "cut 1.3 link 1.1"), ["fix n all nve", "run 5 post no"], OK)
 row("link-evaporate-before-pair-style", scene_dimer() + [

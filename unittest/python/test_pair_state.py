@@ -105,6 +105,10 @@ run 0
     # the remaining atoms keep exactly their links to remaining atoms (coord/atom at L a)
     assert r["natoms"] < 256 and r["cdiff"] == 0 and 0 < r["clinks"] < r["blinks"]
     assert r["cbroken"] == 0 and "links ended with their deleted atoms" in out
+    # every link with a deleted atom is counted once, whichever of its atoms kept its state (the
+    # links/atom sums count each link at both atoms)
+    ended = re.search(r"(\d+) links ended with their deleted atoms", out)
+    assert 2 * int(ended.group(1)) == r["blinks"] - r["clinks"]
 
 
 @pytest.mark.parametrize("nprocs", [1, 2])
