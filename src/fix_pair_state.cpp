@@ -33,8 +33,7 @@ FixPairState::FixPairState(LAMMPS *lmp, int narg, char **arg) :
 {
   if (narg != 4 && narg != 5) error->all(FLERR, "Illegal fix PAIR_STATE command");
   layout.choose(dnum, narg == 5 ? utils::inumeric(FLERR, arg[4], false, lmp) : 0);
-  row = layout.row;
-  slots.set_row(row);
+  slots.set_row(layout.row);
   dnum = layout.saved();    // FixNeighHistory's per-atom copies: the saved doubles
   dnumbytes = dnum * sizeof(double);
   comm_forward = 1 + PER_ROUND * (dnum + 1);    // the partner rounds; the saved IDs take 1
@@ -66,7 +65,7 @@ void FixPairState::save()
       for (int jj = 0; jj < nstate[i]; jj++)
         if (firstflag[i][jj]) {
           double *v = slots.all()[i][jj] ? slots.all()[i][jj] : claim(i, jj);
-          v[row - 1] = firstflag[i][jj];
+          v[layout.row - 1] = firstflag[i][jj];
         }
     }
   save_one_copy();
@@ -204,7 +203,7 @@ void FixPairState::restore()
   std::vector<int> kept, rest;    // the list's entries that keep doubles, and the others
   std::vector<const double *> found;    // the kept ones' saved states (null: none)
   std::vector<int> turned;              // found at the other atom: seen from it
-  std::vector<double> seen(row);        // such a state as its other atom saw it
+  std::vector<double> seen(layout.row);    // such a state as its other atom saw it
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];
     int *jlist = list->firstneigh[i];
@@ -240,7 +239,7 @@ void FixPairState::restore()
     // doubles for the pairs with a saved state; the others claim theirs when they need them
     int nfound = 0;
     for (const double *saved : found) nfound += saved != nullptr;
-    double *v = dpage_neigh->get(nfound * row);
+    double *v = dpage_neigh->get(nfound * layout.row);
     if (!v) error->one(FLERR, "Neighbor history overflow, boost neigh_modify one");
     double **slot = slots.of(i, nkept);
     for (int jj = 0; jj < nkept; jj++) {
@@ -253,10 +252,10 @@ void FixPairState::restore()
         if (pair->nondefault_history_transfer)
           pair->transfer_history(seen.data(), v, type[jn], type[i]);
         else
-          for (int k = 0; k < row; k++) v[k] = -seen[k];
+          for (int k = 0; k < layout.row; k++) v[k] = -seen[k];
       }
-      flags[jj] = PairStateLayout::word(v, row);
-      v += row;
+      flags[jj] = PairStateLayout::word(v, layout.row);
+      v += layout.row;
     }
   }
 }
@@ -382,7 +381,7 @@ void FixPairState::unpack_restart(int nlocal, int nth)
   const PairStateLayout::Record kind = layout.record(length, n, record[length - 1]);
   if (kind == PairStateLayout::UNKNOWN)
     error->one(FLERR, "Fix {}: a restart record of {} values for {} pairs of {} doubles: the "
-               "file was written by another pair style or plugin", id, length, n, row - 1);
+               "file was written by another pair style or plugin", id, length, n, layout.row - 1);
   saved_id[nlocal] = layout.owner_id(record + 2, n, kind);
   partner[nlocal] = ipage_atom->get(n);
   valuepartner[nlocal] = dpage_atom->get(dnum * n);

@@ -11,7 +11,7 @@
      atoms, the ghosts' saved pairs sent from their owners first, and turns
      a pair found at its other atom round (transfer_history()); the owner's
      doubles that hold only within a compute are not saved (a bit mask, the
-     fix's fifth argument): dnum is the saved entry's width, row the list's;
+     fix's fifth argument): dnum is the saved entry's width, layout.row the list's;
    - the neighbour data are saved to the atoms only while they describe the
      current atoms (from a list build or a run's setup to the end of the
      run): write_restart after a run no longer saves from a list whose ghost
@@ -107,7 +107,6 @@ namespace ClusterDyn {
     enum { SAVED_IDS, PARTNERS };
     static constexpr int PER_ROUND = 1;
     int forward_mode, forward_round;
-    int row;                              // doubles per pair in the list (the word's last)
     PairStateLayout layout;               // the list's rows and the saved doubles
     PairStateSlots slots;                 // state_slots(), maxstate of them
     void save();

@@ -136,7 +136,8 @@ bigint PairStateAudit::count_saved_links()
 {
   bigint mine = 0, all;
   for (int i = 0; i < atom->nlocal; i++)
-    for (int m = 0; m < fix.npartner[i]; m++) mine += PairStateLayout::word(fix.valuepartner[i] + fix.dnum * m, fix.dnum) & 1;
+    for (int m = 0; m < fix.npartner[i]; m++)
+      mine += PairStateLayout::word(fix.valuepartner[i] + fix.dnum * m, fix.dnum) & 1;
   MPI_Allreduce(&mine, &all, 1, MPI_LMP_BIGINT, MPI_SUM, world);
   return all;
 }
