@@ -18,7 +18,6 @@
 #include "update.h"
 
 #include <algorithm>
-#include <cmath>
 #include <cstring>
 #include <vector>
 
@@ -114,12 +113,6 @@ void FixPairState::save_one_copy()
 }
 
 void FixPairState::setup(int)
-{
-  nds_current = 1;
-  save();
-}
-
-void FixPairState::min_setup(int)
 {
   nds_current = 1;
   save();

@@ -62,7 +62,7 @@ namespace ClusterDyn {
     ~FixPairState() override;
     int setmask() override;
     void setup(int) override;
-    void min_setup(int) override;
+    void min_setup(int vflag) override { setup(vflag); }
     void pre_exchange() override;
     void min_pre_exchange() override;
     void post_neighbor() override;

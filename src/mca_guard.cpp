@@ -39,6 +39,22 @@ void McaGuard::check_style(int tail_flag, int offset_flag, int plane) const
   if (offset_flag) error->all(FLERR, "Pair mca: pair_modify shift yes does not apply");
 }
 
+void McaGuard::check_shock(const std::vector<McaMaterial> &given, bool manybody) const
+{
+  bool shock = false;
+  for (const McaMaterial &m : given) shock = shock || m.shock();
+  if (!shock) return;
+  if (domain->dimension == 2)
+    error->all(FLERR, "Pair mca: the shock equation of state (pair_coeff ... shock) is "
+               "three-dimensional: in dimension 2 give bulk K shear G");
+  if (!manybody)
+    error->all(FLERR, "Pair mca: a shock equation of state (pair_coeff ... shock) needs the "
+               "many-body term: remove 'manybody no'");
+  if (update->whichflag == 2)
+    error->all(FLERR, "Pair mca: the elements' shock equation of state follows their volume "
+               "through a run; minimize cannot move it (use the linear law, bulk K)");
+}
+
 void McaGuard::init()
 {
   const int ntypes = atom->ntypes;
@@ -101,4 +117,11 @@ void McaGuard::at_setup(const std::vector<McaMaterial> &scaled, double fraction)
                    "longitudinal wave takes to cross the smallest element: expect energy "
                    "errors above 1e-2 or instability (doc: dt <= 0.1 of it)", update->dt,
                    crossing);
+}
+
+std::vector<double> McaGuard::state_reach(double tolerance) const
+{
+  std::vector<double> reach(rmax.size(), 0.0);
+  for (std::size_t t = 1; t < rmax.size(); t++) reach[t] = (1.0 + tolerance) * rmax[t];
+  return reach;
 }

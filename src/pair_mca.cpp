@@ -346,20 +346,10 @@ void PairMCA::init_style()
   guard.check_style(tail_flag, offset_flag, setting.plane);
   guard.init();
   types.init(setting.plane == McaSettings::STRESS);
-  if (domain->dimension == 2)
-    for (const McaMaterial &m : types.as_given())
-      if (m.shock())
-        error->all(FLERR, "Pair mca: the shock equation of state (pair_coeff ... shock) is "
-                   "three-dimensional: in dimension 2 give bulk K shear G");
+  guard.check_shock(types.as_given(), setting.manybody);
   tracks_changes = setting.manybody && types.responds();
   manybody.init(types.scaled(), setting.fraction);
   eos.init(types.scaled(), setting.fraction);
-  if (eos.active() && !setting.manybody)
-    error->all(FLERR, "Pair mca: a shock equation of state (pair_coeff ... shock) needs the "
-               "many-body term: remove 'manybody no'");
-  if (eos.active() && update->whichflag == 2)
-    error->all(FLERR, "Pair mca: the elements' shock equation of state follows their volume "
-               "through a run; minimize cannot move it (use the linear law, bulk K)");
   stress.init(setting.fraction);
   plasticity.init(types.as_given(), setting.plane == McaSettings::STRAIN);
   segments.init();
@@ -367,13 +357,7 @@ void PairMCA::init_style()
   state.explain_lost_links([this] { return eos.lost_links_reason(); });
   neighbor->add_request(this, NeighConst::REQ_HISTORY);
   if (segments.active()) neighbor->add_request(this, NeighConst::REQ_FULL)->set_id(1);
-  // elements link (at a setup) within (1 + T)(R_i + R_j) and touch within R_i + R_j or where a
-  // broken link left them (a pair that keeps its state), R no larger than the largest of the
-  // type at init (the guard): the pairs farther apart keep none until the next list build
-  std::vector<double> reach(atom->ntypes + 1, 0.0);
-  for (int t = 1; t <= atom->ntypes; t++)
-    reach[t] = (1.0 + setting.tolerance) * guard.largest_radius(t);
-  state.keep_state_within(reach);
+  state.keep_state_within(guard.state_reach(setting.tolerance));
   state.init();
 }
 
