@@ -8,6 +8,9 @@
 # energy (ke + pe + rotation) and the links broken at the last step (the widest plate on 1 and
 # 2 ranks: the same result).
 #   bash bench/bench_mca_scale.sh [BUILD] [STEPS] [CELLS...]    (BUILD: a folder with env.sh)
+# ROUNDS=N (default 1): the widths in turn N times on one rank, then each width's median Pair
+# time and the widest's median against the narrowest's (short runs of a small plate scatter by
+# 1.5x on a machine whose speed wanders: one round does not read the rise).
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 examples=$(cd "$here/../examples" && pwd)
@@ -38,5 +41,16 @@ one() {  # ranks cells
         ranks, cells, atoms, nb, 1e6 * pair / (atoms * steps), 1e6 * neigh / (atoms * steps),
         mem * ranks * 1048.576 / atoms, energy, broken}'
 }
-for c in "${widths[@]}"; do one 1 "$c"; done
+rounds=${ROUNDS:-1}
+for _ in $(seq "$rounds"); do
+  for c in "${widths[@]}"; do one 1 "$c"; done
+done | tee runs.txt
 one 2 "${widths[-1]}"
+if [ "$rounds" -gt 1 ]; then
+  for c in "${widths[@]}"; do
+    awk -v c="$c" '$3 == c"" && $4 == "cells:" {print $11}' runs.txt | sort -g |
+      awk -v c="$c" '{v[NR] = $1} END {m = (NR % 2) ? v[(NR + 1) / 2] : 0.5 * (v[NR / 2] + v[NR / 2 + 1]);
+        printf "median of %d rounds, %3d cells: Pair %.3f us per element-step (%.3f-%.3f)\n", NR, c, m, v[1], v[NR]}'
+  done | tee medians.txt
+  awk 'NR == 1 {first = $8} {last = $8} END {printf "widest / narrowest: %.2fx\n", last / first}' medians.txt
+fi
