@@ -737,6 +737,27 @@ MUTANTS = [
      '      for (int jj = 0; jj < list->numneigh[i]; jj++) {',
      [PY + "test_compute_links_atom.py", PY + "test_pair_mca.py"],
      'pair mca (state kept within the linking reach): words read past the atom\'s row, the next atoms\' links counted'),
+    # the shock checks and the state reach moved out of init_style() into McaGuard (outsiders' mutants)
+    ('mca guard check_shock: only the last material decides whether a shock eos is present [r10-01]', 'src/mca_guard.cpp',
+     '  for (const McaMaterial &m : given) shock = shock || m.shock();',
+     '  for (const McaMaterial &m : given) shock = m.shock();',
+     [PY + "test_mca_shock.py", PY + "test_mca_2d.py", PY + "test_pair_mca.py"],
+     'a shock material on any type but the highest escapes the checks: dimension 2, manybody no or minimize with it run without the error'),
+    ('mca guard check_shock: the minimize check tests whichflag 1 (run) instead of 2 (minimize) [r10-02]', 'src/mca_guard.cpp',
+     '  if (update->whichflag == 2)',
+     '  if (update->whichflag == 1)',
+     [PY + "test_mca_shock.py", PY + "test_mca_fracture.py", PY + "test_pair_mca.py"],
+     'every run with a shock material stops with the minimize error, while minimize with a shock material goes ahead unrefused'),
+    ('mca guard state_reach: type loop stops one short, the highest type keeps reach 0 [r10-03]', 'src/mca_guard.cpp',
+     '  for (std::size_t t = 1; t < rmax.size(); t++) reach[t] = (1.0 + tolerance) * rmax[t];',
+     '  for (std::size_t t = 1; t < rmax.size() - 1; t++) reach[t] = (1.0 + tolerance) * rmax[t];',
+     [PY + "test_pair_mca.py", PY + "test_pair_state.py", PY + "test_compute_links_atom.py", PY + "test_mca_fracture.py", PY + "test_mca_2d.py"],
+     'pairs of the highest type (every pair with one type) keep a state only within the skin: elements do not link or touch, they pass through each other'),
+    ('pair mca init_style: the state reach made without the tolerance [r10-04]', 'src/pair_mca.cpp',
+     '  state.keep_state_within(guard.state_reach(setting.tolerance));',
+     '  state.keep_state_within(guard.state_reach(0.0));',
+     [PY + "test_pair_mca.py", PY + "test_pair_state.py", PY + "test_compute_links_atom.py"],
+     'where T (R_i + R_j) exceeds the skin, pairs farther than R_i + R_j + skin but within (1 + T)(R_i + R_j) are not linked at setup: fewer links than the tolerance promises'),
 ]
 
 

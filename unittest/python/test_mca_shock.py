@@ -417,6 +417,22 @@ def test_a_linear_material_is_not_changed_by_a_shock_material_beside_it():
                                                                                rel=1e-12)
 
 
+@pytest.mark.parametrize("change,message", [
+    ("manybody no", r"needs the many-body term"),
+    ("minimize", r"shock equation of state follows their volume through a run"),
+])
+def test_a_shock_material_on_any_type_is_checked(change, message):
+    """The shock law's setup checks see a shock material on the first of two types as on the
+    last (outsider mutant [r10-01]: only the last type's material decided)."""
+    commands = two_types(f"shock {RHO0} {C0} {S} {GAMMA0} shear {G}", f"bulk {K} shear {G}", 0.5)
+    if change == "manybody no":
+        commands = [c + " manybody no" if c.startswith("pair_style") else c for c in commands]
+    with session() as lmp:
+        lmp.commands_list(commands)
+        with pytest.raises(Exception, match=message):
+            lmp.command("minimize 0 0 10 10" if change == "minimize" else "run 1 post no")
+
+
 def test_shock_and_linear_elements_linked_keep_their_energy():
     """Half the elements with the shock law, half with the linear one (K = rho0 c0^2), linked at
     random, struck at 500 m/s: the energy stays within 0.3 % over 6000 steps (0.036 %
