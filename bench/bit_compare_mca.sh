@@ -7,7 +7,9 @@
 # examples/mca-shock with its links' strength).  compute mca/atom's first 10 columns (the 11th,
 # the spall kinetics' damage, came later).
 # Prints one line per case, "identical", "the same trajectory" (the dump alike, the energy line
-# not: pe and the pair's tallies), or what differs.
+# not: pe and the pair's tallies), or DIFFERENT with each quantity's largest difference over its
+# largest value (positions across a periodic boundary by their minimum image; torques and spins
+# with their largest value, round-off in a plate) and the energy lines.
 #   bash bench/bit_compare_mca.sh BUILD_A BUILD_B    (folders with env.sh)
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
@@ -31,6 +33,45 @@ one() {  # build, tag, input, ranks, lmp args...
      -nocite "$@" | grep '^ENERGY' > energy.txt)
   cd "$work"
 }
+largest_difference() {  # two dumps -> the quantity that differs most, relative to its largest value
+  /usr/bin/python3 - "$1" "$2" <<'PY'
+import sys
+def read(path):
+    lines = open(path).read().splitlines()
+    head = next(k for k, l in enumerate(lines) if l.startswith("ITEM: ATOMS"))
+    box = next(k for k, l in enumerate(lines) if l.startswith("ITEM: BOX BOUNDS"))
+    lengths = [float(l.split()[1]) - float(l.split()[0]) for l in lines[box + 1:box + 4]]
+    return lines[head].split()[2:], [[float(v) for v in l.split()] for l in lines[head + 1:]], lengths
+names, a, lengths = read(sys.argv[1])
+_, b, _ = read(sys.argv[2])
+# a position wrapped to the other side of a periodic box is the same position
+for p, q in zip(a, b):
+    for k, n in enumerate(("x", "y", "z")):
+        if n in names:
+            c = names.index(n)
+            q[c] -= lengths[k] * round((q[c] - p[c]) / lengths[k])
+if len(a) != len(b):
+    print(f"{len(a)} against {len(b)} atoms")
+    sys.exit()
+# a vector's or a tensor's components are read against the largest of them (a column that is
+# zero but for round-off, as fy of a plate, would read its round-off against itself)
+groups = {"x": ["x", "y", "z"], "v": ["vx", "vy", "vz"], "f": ["fx", "fy", "fz"],
+          "torque": ["tqx", "tqy", "tqz"], "omega": ["omegax", "omegay", "omegaz"],
+          "stress": [f"c_bitstress[{k}]" for k in range(1, 7)]}
+grouped = {n for g in groups.values() for n in g}
+groups.update({n: [n] for n in names[1:] if n not in grouped})
+worst, scales = [], []
+for label, members in groups.items():
+    cols = [names.index(n) for n in members if n in names]
+    scale = max(abs(p[c]) for p in a for c in cols) or 1.0
+    worst.append((max(abs(p[c] - q[c]) for p, q in zip(a, b) for c in cols) / scale, label))
+    scales.append(scale)
+print("largest difference over the largest value: " +
+      ", ".join(f"{label} {d:.0e}" for d, label in worst if label in ("x", "v", "f", "stress")) +
+      "; " + ", ".join(f"{label} {d:.0e} (largest {scale:.0e})" for d, label, scale in
+                        ((d, l, s) for (d, l), s in zip(worst, scales)) if label in ("torque", "omega")))
+PY
+}
 case_() {  # label, input, ranks, lmp args...
   local label=$1 input=$2 ranks=$3; shift 3
   one "$a" A "$input" "$ranks" "$@"
@@ -41,7 +82,8 @@ case_() {  # label, input, ranks, lmp args...
     echo "$label: the same trajectory (positions, velocities, forces, torques, stresses), other energies"
     diff A/energy.txt B/energy.txt | head -4 || true
   else
-    echo "$label: DIFFERENT"; diff A/energy.txt B/energy.txt | head -4 || true
+    echo "$label: DIFFERENT ($(largest_difference A/final.dump B/final.dump))"
+    diff A/energy.txt B/energy.txt | head -4 || true
   fi
   rm -rf A B
 }

@@ -95,28 +95,41 @@ namespace ClusterDyn {
       c[2] = a[0] * b[1] - a[1] * b[0];
     }
 
-    // a turn by the rotation vector phi (angle |phi| about phi / |phi|), Rodrigues' formula;
-    // its cosine and sine are taken once for all the vectors it turns
+    // a turn by the rotation vector phi (angle a = |phi| about phi / a), Rodrigues' formula
+    // with phi unnormalized: v' = v cos a + (phi x v) sin(a)/a + phi (phi.v) (1 - cos a)/a^2;
+    // its three factors are taken once for all the vectors it turns, and below a = 1e-2
+    // (a step's turn of a contact is far below) from their Taylor series to a^6, whose
+    // remainder a^8/8! is below 1e-20: no square root, division or sine there, and no
+    // cancellation in 1 - cos a
     struct Turn {
-      double k[3] = {0.0, 0.0, 0.0}, c = 1.0, s = 0.0;
+      static constexpr double SERIES = 1e-4;    // a^2 below which the series serve
+      double phi[3] = {0.0, 0.0, 0.0}, c = 1.0, sa = 1.0, ca = 0.5;
       bool none = true;
       Turn() = default;    // no turn
-      explicit Turn(const double *phi)
+      explicit Turn(const double *rotation)
       {
-        const double angle = sqrt(dot(phi, phi));
-        if (angle == 0.0) return;
-        for (int m = 0; m < 3; m++) k[m] = phi[m] / angle;
-        c = cos(angle);
-        s = sin(angle);
+        const double a2 = dot(rotation, rotation);
+        if (a2 == 0.0) return;
+        for (int m = 0; m < 3; m++) phi[m] = rotation[m];
+        if (a2 < SERIES) {
+          c = 1.0 - a2 / 2.0 * (1.0 - a2 / 12.0 * (1.0 - a2 / 30.0));
+          sa = 1.0 - a2 / 6.0 * (1.0 - a2 / 20.0 * (1.0 - a2 / 42.0));
+          ca = 0.5 * (1.0 - a2 / 12.0 * (1.0 - a2 / 30.0 * (1.0 - a2 / 56.0)));
+        } else {
+          const double a = sqrt(a2);
+          c = cos(a);
+          sa = sin(a) / a;
+          ca = (1.0 - c) / a2;
+        }
         none = false;
       }
       void apply(double *v) const
       {
         if (none) return;
-        double kv[3];
-        cross(k, v, kv);
-        const double kdv = dot(k, v) * (1.0 - c);
-        for (int m = 0; m < 3; m++) v[m] = v[m] * c + kv[m] * s + k[m] * kdv;
+        double pv[3];
+        cross(phi, v, pv);
+        const double pdv = dot(phi, v) * ca;
+        for (int m = 0; m < 3; m++) v[m] = v[m] * c + pv[m] * sa + phi[m] * pdv;
       }
     };
 

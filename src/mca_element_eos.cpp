@@ -18,6 +18,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 
 using namespace LAMMPS_NS;
 using namespace ClusterDyn;
@@ -130,8 +131,7 @@ void McaElementEos::check_densities() const
 
 void McaElementEos::begin(int nall)
 {
-  for (int i = 0; i < nall; i++)
-    for (int k = 0; k < SUMS; k++) sums[i][k] = 0.0;
+  if (nall > 0) memset(sums[0], 0, sizeof(double) * nall * SUMS);    // memory->create: one block
 }
 
 void McaElementEos::finish(Advance how, double dt)
@@ -283,7 +283,7 @@ double McaElementEos::damage(int i) const
 
 void McaElementEos::begin_heat(int nall)
 {
-  for (int i = 0; i < nall; i++) heat[i][0] = 0.0;
+  if (nall > 0) memset(heat[0], 0, sizeof(double) * nall);    // memory->create: one block
 }
 
 void McaElementEos::finish_heat()

@@ -13,6 +13,8 @@
 #include "memory.h"
 #include "update.h"
 
+#include <cstring>
+
 using namespace LAMMPS_NS;
 using namespace ClusterDyn;
 
@@ -36,8 +38,7 @@ double McaElementStress::memory_usage() const
 
 void McaElementStress::zero(int nall)
 {
-  for (int i = 0; i < nall; i++)
-    for (int k = 0; k < COLUMNS; k++) rows[i][k] = 0.0;
+  if (nall > 0) memset(rows[0], 0, sizeof(double) * nall * COLUMNS);    // memory->create: one block
 }
 
 void McaElementStress::to_owners(bool to_pressure)

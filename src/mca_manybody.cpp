@@ -11,6 +11,8 @@
 #include "domain.h"
 #include "memory.h"
 
+#include <cstring>
+
 using namespace LAMMPS_NS;
 using namespace ClusterDyn;
 
@@ -45,7 +47,9 @@ double McaManybody::volume(int i) const
 
 void McaManybody::begin_strain(int nall)
 {
-  for (int i = 0; i < nall; i++) theta[i][0] = extra[i] = 0.0;
+  if (nall == 0) return;
+  memset(theta[0], 0, sizeof(double) * nall);    // memory->create: one block
+  memset(extra, 0, sizeof(double) * nall);
 }
 
 void McaManybody::finish_strain()
@@ -57,8 +61,7 @@ void McaManybody::finish_strain()
 
 void McaManybody::begin_changes(int nall)
 {
-  for (int i = 0; i < nall; i++)
-    for (int c = 0; c < NCHANGES; c++) dtheta[i][c] = 0.0;
+  if (nall > 0) memset(dtheta[0], 0, sizeof(double) * nall * NCHANGES);    // one block
 }
 
 void McaManybody::tally_changes(StateTally &changes, int damage_work, int plastic_work,

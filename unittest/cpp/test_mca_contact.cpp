@@ -92,6 +92,31 @@ TEST(McaContact, TurnIsTheRotationByPhi)
   expect_vec(turned(v, {0.0, 0.0, 0.0}), v, 0.0);    // no turn
 }
 
+// a step's turn is small: below a = 1e-2 the factors come from their series (mca_contact.h);
+// on both sides of that bound, and across it, the turn is the rotation to round-off (a wrong
+// coefficient of a^4 would show as 1e-11)
+TEST(McaContact, SmallTurnsByTheSeriesAreTheRotation)
+{
+  const Vec v = {0.7, -1.3, 2.1}, axis = unit({0.3, 0.9, -0.4});
+  const double bound = std::sqrt(McaContact::Turn::SERIES);
+  EXPECT_DOUBLE_EQ(bound, 1e-2);
+  for (double angle : {1e-9, 1e-5, 1e-3, 5e-3, 0.9999999 * bound, 1.0000001 * bound, 0.02}) {
+    const Vec phi = scaled(axis, angle), t = turned(v, phi);
+    expect_vec(t, rotated(v, phi), 4e-15);    // a few ulp of |v| (the reference's own round-off)
+    EXPECT_NEAR(dot(t, t), dot(v, v), 4e-15) << "angle " << angle;
+    // the part along the axis stays, the rest turns by the angle
+    const Vec along = scaled(axis, dot(v, axis)), vp = {v[0] - along[0], v[1] - along[1],
+                                                        v[2] - along[2]};
+    const Vec tp = {t[0] - along[0], t[1] - along[1], t[2] - along[2]};
+    EXPECT_NEAR(dot(t, axis), dot(v, axis), 1e-15);
+    EXPECT_NEAR(dot(cross(vp, tp), axis) / dot(vp, vp), std::sin(angle), 1e-15) << "angle " << angle;
+  }
+  // no jump at the bound: turns just below and just above it differ by their angles' difference
+  const Vec below = turned(v, scaled(axis, bound * (1.0 - 1e-9)));
+  const Vec above = turned(v, scaled(axis, bound * (1.0 + 1e-9)));
+  expect_vec(below, above, 1e-15 + 2e-11 * std::sqrt(dot(v, v)));
+}
+
 TEST(McaContact, RigidRotationMakesNoStress)
 {
   const double a = 7.0;
