@@ -111,10 +111,11 @@ namespace ClusterDyn {
         const double a2 = dot(rotation, rotation);
         if (a2 == 0.0) return;
         for (int m = 0; m < 3; m++) phi[m] = rotation[m];
-        if (a2 < SERIES) {
-          c = 1.0 - a2 / 2.0 * (1.0 - a2 / 12.0 * (1.0 - a2 / 30.0));
-          sa = 1.0 - a2 / 6.0 * (1.0 - a2 / 20.0 * (1.0 - a2 / 42.0));
-          ca = 0.5 * (1.0 - a2 / 12.0 * (1.0 - a2 / 30.0 * (1.0 - a2 / 56.0)));
+        if (a2 < SERIES) {    // the constants are reciprocals, multiplied
+          c = 1.0 - 0.5 * a2 * (1.0 - a2 * (1.0 / 12.0) * (1.0 - a2 * (1.0 / 30.0)));
+          sa = 1.0 - a2 * (1.0 / 6.0) * (1.0 - a2 * (1.0 / 20.0) * (1.0 - a2 * (1.0 / 42.0)));
+          ca = 0.5 * (1.0 - a2 * (1.0 / 12.0) *
+                                (1.0 - a2 * (1.0 / 30.0) * (1.0 - a2 * (1.0 / 56.0))));
         } else {
           const double a = sqrt(a2);
           c = cos(a);
