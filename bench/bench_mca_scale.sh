@@ -4,7 +4,9 @@
 # CELLS x CELLS fcc cells across (5: 3,050 elements ... 50: 305,000), a short run of STEPS steps
 # from the impact on one rank (and on 2 ranks for the widest).  Prints per width: the elements,
 # the neighbours per element (LAMMPS's count, half list), LAMMPS's Pair and Neigh time per
-# element-step (timing breakdown), its memory report per element (the ranks' sum), and the
+# element-step (timing breakdown), its memory report per element (the ranks' sum: their mean
+# times their number) at the run's setup and at a run 0 after it (a list build from the saved
+# pairs: the pages at their high water), and the
 # energy (ke + pe + rotation) and the links broken at the last step (the widest plate on 1 and
 # 2 ranks: the same result).
 #   bash bench/bench_mca_scale.sh [BUILD] [STEPS] [CELLS...]    (BUILD: a folder with env.sh)
@@ -20,26 +22,27 @@ widths=("$@")
 [ ${#widths[@]} -gt 0 ] || widths=(5 10 20 32 50)
 work=$(mktemp -d)
 cd "$work"
-# in.plate with a run of $steps steps
-sed "s/^variable     steps equal .*/variable     steps equal $steps/" "$examples/mca-shock/in.plate" \
-  > in.plate
+# in.plate with a run of $steps steps, then a run 0
+sed -e "s/^variable     steps equal .*/variable     steps equal $steps/" \
+  -e 's/^run          ${steps}$/&\nrun 0/' "$examples/mca-shock/in.plate" > in.plate
+grep -q "^run 0" in.plate || { echo "bench_mca_scale.sh: in.plate has no 'run \${steps}' line" >&2; exit 1; }
 one() {  # ranks cells
   local ranks=$1 cells=$2
   (source "$build/env.sh"; OMP_NUM_THREADS=1 mpirun -np "$ranks" --oversubscribe lmp \
     -in in.plate -log none -nocite -var metal al -var v 400 -var d 1e-5 -var records 0 \
     -var cells "$cells" -var here "$examples/mca-shock/") | awk -v ranks="$ranks" -v cells="$cells" '
-    /Per MPI rank memory allocation/ {mem = $(NF - 1)}
-    /^Loop time of/ {steps = $9; atoms = $12}
-    $1 == "Pair" && $2 == "|" {pair = $5}
-    $1 == "Neigh" && $2 == "|" {neigh = $5}
+    /Per MPI rank memory allocation/ {if (mem0 == "") mem0 = $(NF - 3); mem = $(NF - 3)}
+    /^Loop time of/ && !done {steps = $9; atoms = $12}
+    $1 == "Pair" && $2 == "|" && !done {pair = $5}
+    $1 == "Neigh" && $2 == "|" && !done {neigh = $5; done = 1}
     /^Ave neighs\/atom/ {nb = $4}
     /^ *Step / {thermo = 1; next}
     thermo && /^Loop time/ {thermo = 0}
     thermo && $1 ~ /^[0-9]+$/ {energy = $6; broken = $7}
     END {
-      printf "%2d ranks %3d cells: %7d elements, %5.1f neighbours each; Pair %.3f us, Neigh %.3f us per element-step; memory %.2f kB per element; energy %s J, %s links broken\n",
+      printf "%2d ranks %3d cells: %7d elements, %5.1f neighbours each; Pair %.3f us, Neigh %.3f us per element-step; memory %.2f kB per element (%.2f after the run); energy %s J, %s links broken\n",
         ranks, cells, atoms, nb, 1e6 * pair / (atoms * steps), 1e6 * neigh / (atoms * steps),
-        mem * ranks * 1048.576 / atoms, energy, broken}'
+        mem0 * ranks * 1048.576 / atoms, mem * ranks * 1048.576 / atoms, energy, broken}'
 }
 rounds=${ROUNDS:-1}
 for _ in $(seq "$rounds"); do

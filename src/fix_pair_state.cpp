@@ -6,6 +6,7 @@
 
 #include "pair_state.h"
 #include "pair_state_audit.h"
+#include "pair_state_pages.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -49,6 +50,32 @@ FixPairState::~FixPairState()
 int FixPairState::setmask()
 {
   return FixNeighHistory::setmask();    // setup(), min_setup() and post_run() need no mask
+}
+
+// FixNeighHistory's checks and pages; their sizes where it made them anew (the first init, or
+// neigh_modify page or one changed), the saved pairs carried into them (pair_state_pages.h)
+void FixPairState::init()
+{
+  const bool anew = !ipage_atom || pgsize != neighbor->pgsize || oneatom != neighbor->oneatom;
+  PairStatePages::Carried carried;
+  if (anew && ipage_atom)
+    carried = PairStatePages::carry_out(atom->nlocal, npartner, partner, valuepartner, dnum);
+  FixNeighHistory::init();
+  if (!anew) return;
+  size_pages();
+  PairStatePages::carry_in(carried, npartner, partner, valuepartner, dnum, *ipage_atom,
+                           *dpage_atom, error);
+}
+
+void FixPairState::size_pages()
+{
+  for (int t = 0; t < comm->nthreads; t++) {
+    PairStatePages::size(ipage_atom[t], oneatom, error);
+    PairStatePages::size(dpage_atom[t], dnum * oneatom, error);
+    PairStatePages::size(ipage_neigh[t], oneatom, error);
+    PairStatePages::size(dpage_neigh[t], layout.row * oneatom, error);
+  }
+  ghosts.size_ghosts(oneatom, dnum, error);
 }
 
 /* ----------------------------------------------------------------------
@@ -112,17 +139,6 @@ void FixPairState::save_one_copy()
   for (int i = nlocal_neigh; i < atom->nlocal; i++) npartner[i] = 0;
 }
 
-void FixPairState::setup(int)
-{
-  nds_current = 1;
-  save();
-}
-
-void FixPairState::pre_exchange()
-{
-  save();
-}
-
 void FixPairState::min_pre_exchange()
 {
   if (owner) owner->settle_before_save();
@@ -161,6 +177,7 @@ void FixPairState::post_neighbor()
   restore();
   nds_current = 1;
   audit.check_lost_links();
+  drop_ghost_partners();
 }
 
 // FixNeighHistory::post_neighbor() (its pair style keeps every listed pair, beyond_contact),
@@ -261,31 +278,15 @@ double *FixPairState::claim(int i, int jj)
   return v;
 }
 
-// atom i's saved state of its pair with the atom of ID partner_id, seen from i (null: none)
-const double *FixPairState::saved_state(int i, tagint partner_id) const
-{
-  for (int m = 0; m < npartner[i]; m++)
-    if (partner[i][m] == partner_id) return valuepartner[i] + dnum * m;
-  return nullptr;
-}
-
-// the atom whose saved states atom j's are: j, or the owned atom a ghost is an image of (with
-// an atom map)
-int FixPairState::holder(int j) const
-{
-  if (j < atom->nlocal || atom->map_style == Atom::MAP_NONE) return j;
-  const int m = atom->map(atom->tag[j]);
-  return m >= 0 && m < atom->nlocal ? m : j;
-}
-
 // the ghosts' saved states from their owners (a pair the new list turned round is kept at its
 // other atom, which may be a ghost now), PER_ROUND of each atom's per forward communication;
 // a ghost that is an image of an owned atom (holder()) keeps none: on one processor no ghost
-// needs them
+// needs them; they are dropped after the build (drop_ghost_partners())
 void FixPairState::forward_partners()
 {
   const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
   for (int i = nlocal; i < nall; i++) npartner[i] = 0;
+  ghosts.reset();
   if (comm->nprocs == 1 && atom->map_style != Atom::MAP_NONE) return;
   int most = 0, most_all;
   for (int i = 0; i < nlocal; i++) most = std::max(most, npartner[i]);
@@ -365,7 +366,7 @@ int FixPairState::pack_restart(int i, double *buf)
 
 void FixPairState::unpack_restart(int nlocal, int nth)
 {
-  if (ipage_atom == nullptr) allocate_pages();
+  if (ipage_atom == nullptr) first_pages();
   double **extra = atom->extra;
   int m = 0;
   for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
@@ -378,6 +379,9 @@ void FixPairState::unpack_restart(int nlocal, int nth)
   saved_id[nlocal] = layout.owner_id(record + 2, n, kind);
   partner[nlocal] = ipage_atom->get(n);
   valuepartner[nlocal] = dpage_atom->get(dnum * n);
+  if (!partner[nlocal] || !valuepartner[nlocal])
+    error->one(FLERR, "Fix {}: an atom of the restart file keeps {} saved pairs, more than "
+               "neigh_modify one allows: boost neigh_modify one", id, n);
   npartner[nlocal] =
       layout.read(record + 2, n, kind, saved_id[nlocal], partner[nlocal], valuepartner[nlocal]);
   maxpartner = std::max(maxpartner, npartner[nlocal]);
@@ -425,8 +429,8 @@ void FixPairState::unpack_forward_comm(int n, int first, double *buf)
     const bool kept = holder(g) == g;    // an image of an owned atom keeps none
     if (from == 0) {
       npartner[g] = static_cast<int>(buf[m++]);
-      partner[g] = kept ? ipage_atom->get(npartner[g]) : nullptr;
-      valuepartner[g] = kept ? dpage_atom->get(dnum * npartner[g]) : nullptr;
+      partner[g] = kept ? ghosts.ghost_ids(npartner[g]) : nullptr;
+      valuepartner[g] = kept ? ghosts.ghost_values(npartner[g]) : nullptr;
       if (kept && (!partner[g] || !valuepartner[g]))
         error->one(FLERR, "Neighbor history overflow, boost neigh_modify one");
     }
@@ -442,5 +446,5 @@ double FixPairState::memory_usage()
 {
   return FixNeighHistory::memory_usage() + (double) atom->nmax * sizeof(tagint) +
       (double) maxstate * (sizeof(int) + sizeof(double **)) +
-      slots.bytes();
+      slots.bytes() + ghosts.bytes();
 }

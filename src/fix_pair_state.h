@@ -44,8 +44,10 @@
 #ifndef LMP_CLUSTERDYN_FIX_PAIR_STATE_H
 #define LMP_CLUSTERDYN_FIX_PAIR_STATE_H
 
+#include "atom.h"
 #include "fix_neigh_history.h"
 #include "pair_state_layout.h"
+#include "pair_state_pages.h"
 #include "pair_state_slots.h"
 
 #include <string>
@@ -61,9 +63,14 @@ namespace ClusterDyn {
     FixPairState(class LAMMPS *, int, char **);
     ~FixPairState() override;
     int setmask() override;
-    void setup(int) override;
+    void init() override;
+    void setup(int) override
+    {
+      nds_current = 1;
+      save();
+    }
     void min_setup(int vflag) override { setup(vflag); }
-    void pre_exchange() override;
+    void pre_exchange() override { save(); }
     void min_pre_exchange() override;
     void post_neighbor() override;
     void post_run() override;
@@ -109,10 +116,36 @@ namespace ClusterDyn {
     int forward_mode, forward_round;
     PairStateLayout layout;               // the list's rows and the saved doubles
     PairStateSlots slots;                 // state_slots(), maxstate of them
+    PairStatePages ghosts;    // the ghosts' saved pairs during a list build
+    void size_pages();        // pair_state_pages.h
+    void first_pages()        // a restart file's atoms before the first init
+    {
+      allocate_pages();
+      size_pages();
+    }
     void save();
     void save_one_copy();
-    const double *saved_state(int i, tagint partner_id) const;
-    int holder(int j) const;
+    // atom i's saved state of its pair with the atom of ID partner_id, seen from i (null: none)
+    const double *saved_state(int i, tagint partner_id) const
+    {
+      for (int m = 0; m < npartner[i]; m++)
+        if (partner[i][m] == partner_id) return valuepartner[i] + dnum * m;
+      return nullptr;
+    }
+    // the atom whose saved states atom j's are: j, or the owned atom a ghost is an image of
+    // (with an atom map)
+    int holder(int j) const
+    {
+      if (j < atom->nlocal || atom->map_style == Atom::MAP_NONE) return j;
+      const int m = atom->map(atom->tag[j]);
+      return m >= 0 && m < atom->nlocal ? m : j;
+    }
+    // after a list build the ghosts keep no saved pairs, and their pages are freed
+    void drop_ghost_partners()
+    {
+      for (int g = atom->nlocal; g < atom->nlocal + atom->nghost; g++) npartner[g] = 0;
+      ghosts.drop(error);
+    }
     void forward_partners();
     void restore();             // the saved states into the new list (FixNeighHistory's, sorted)
   };

@@ -13,7 +13,8 @@ import subprocess
 
 import numpy as np
 import pytest
-from conftest import LMP, PLUGIN, carried_totals, morse_dimer, morse_fcc, run_lmp, session
+from conftest import (LMP, MCA_FCC_BLOCK, PLUGIN, carried_totals, morse_dimer, morse_fcc, run_lmp,
+                      session)
 
 LINKED = "pair_style morse/spline cut 1.2 link 1.05\npair_coeff * * 1.0 6.0 1.0\nneighbor 0.2 bin\n"
 # the outputs of a linked fcc block: links, broken links and links unlike coord/atom's at L a
@@ -544,3 +545,58 @@ def test_totals_survive_restart_files(totals, scene, nprocs):
     assert r["mid_nm"] == pytest.approx(r["straight_nm"], rel=EXACT)
     assert r["read_n"] == pytest.approx(r["straight_n"], rel=EXACT)
     assert r["resumed_nm"] == pytest.approx(r["straight_nm"], rel=TOTALS[scene][5])
+
+
+def memory_mb(out):
+    """The ranks' mean of each 'Per MPI rank memory allocation' report of a run, MB."""
+    return [float(m) for m in re.findall(
+        r"Per MPI rank memory allocation \(min/avg/max\) = \S+ \| (\S+) \|", out)]
+
+
+def mca_block(extra=""):
+    return f"plugin load {PLUGIN}\n" + MCA_FCC_BLOCK.format(newton="on", dt=0.01) + extra
+
+
+LINK_COUNT = "compute l all links/atom\ncompute ls all reduce sum c_l\n" \
+    "thermo_style custom step pe c_ls\nthermo_modify norm no format float %.15g\n"
+
+
+@pytest.mark.parametrize("nprocs", [1, 2])
+def test_the_pair_states_pages_are_small(tmp_path, nprocs):
+    """fix PAIR_STATE's pages hold 256 kB (or one atom's neigh_modify one pairs), not
+    FixNeighHistory's neigh_modify page pairs (14.4 MB for pair mca's 18 saved doubles, two
+    such kinds of page: 29 MB): the linked block of 256 elements reports at most 8 MB per rank
+    more than the same block under pair_style zero (LAMMPS's atoms and list alone); its pages
+    (six kinds, the slots' and the spare rows' pools), state and per-element arrays, ghosts
+    included, are 5.5 MB."""
+    zero = mca_block().replace("pair_style mca fraction ${phi} tolerance 0.02",
+                               "pair_style zero 1.275").replace(
+        "pair_coeff 1 1 young 1.0 poisson 0.4", "pair_coeff * *")
+    assert "pair_style zero" in zero and "young" not in zero
+    mca = memory_mb(run_lmp(tmp_path, mca_block("run 0\n"), nprocs))
+    base = memory_mb(run_lmp(tmp_path, zero + "run 0\n", nprocs))
+    assert len(mca) == len(base) == 1
+    assert 0.3 < mca[0] - base[0] < 8.0
+
+
+@pytest.mark.parametrize("nprocs", [1, 2])
+def test_neigh_modify_between_runs_keeps_the_saved_pairs(tmp_path, nprocs):
+    """neigh_modify one or page changed between runs makes FixNeighHistory free its pages and
+    make new ones (it crashed, or lost links without a word, before the saved pairs were carried
+    over): the split run equals the straight one to the last digit, every link kept; a `one`
+    below what an atom keeps is refused, naming it."""
+    hot = LINK_COUNT + "run 200\n"
+    straight = mca_block(hot + "run 200\n" + report("s"))
+    for change in ("neigh_modify one 3000", "neigh_modify page 200000", "neigh_modify one 1500 page 30000"):
+        split = mca_block(hot + change + "\nrun 200\n" + report("a"))
+        s = results(run_lmp(tmp_path, straight.replace("c_p[1]", "0").replace("c_diff", "0"),
+                            nprocs))
+        a = results(run_lmp(tmp_path, split.replace("c_p[1]", "0").replace("c_diff", "0"), nprocs))
+        assert s["slinks"] > 3000 and a["alinks"] == s["slinks"], change
+        assert a["ape"] == s["spe"], change
+    tight = mca_block(hot + "neigh_modify one 3 page 300\nrun 0\n")
+    err = subprocess.run([LMP, "-log", "none", "-nocite"], input=tight,
+                         capture_output=True, text=True, cwd=tmp_path, timeout=120)
+    assert "PAIR_STATE: an atom keeps" in err.stdout and "boost neigh_modify one" in err.stdout, \
+        err.stdout[-2000:]
+    assert "Segmentation" not in err.stdout + err.stderr
