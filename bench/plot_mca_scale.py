@@ -11,13 +11,16 @@ import sys
 
 
 def rows(path):
-    """(ranks, elements, Pair us, memory kB) of each line of the benchmark's output."""
+    """(ranks, elements, Pair us, memory kB at the setup, after the run (None: not printed)) of
+    each line of the benchmark's output."""
     out = []
     for line in open(path):
         m = re.search(r"(\d+) ranks +\d+ cells: +(\d+) elements.*Pair ([0-9.]+) us.*memory "
-                      r"([0-9.]+) kB", line)
+                      r"([0-9.]+) kB per element(?: \(([0-9.]+) after the run\))?", line)
         if m:
-            out.append((int(m.group(1)), int(m.group(2)), float(m.group(3)), float(m.group(4))))
+            after = float(m.group(5)) if m.group(5) else None
+            out.append((int(m.group(1)), int(m.group(2)), float(m.group(3)), float(m.group(4)),
+                        after))
     return out
 
 
@@ -45,7 +48,13 @@ def main():
         ax.plot([r[1] for r in two], [r[2] for r in two], "s", label="2 ranks (wall time)")
     ax.axhline(1.2 * one[0][2], color="gray", ls="--", label="1.2 x the smallest plate's")
     against_n(ax, "Pair time per element-step (us)")
-    bx.plot(n, [r[3] for r in one], "o-", label="LAMMPS's memory report, 1 rank")
+    bx.plot(n, [r[3] for r in one], "o-", label="LAMMPS's memory report, 1 rank, setup")
+    if all(r[4] is not None for r in one):
+        bx.plot(n, [r[4] for r in one], "^--", label="1 rank, after list builds")
+    if two:
+        bx.plot([r[1] for r in two], [r[3] for r in two], "s", label="2 ranks, setup")
+        if all(r[4] is not None for r in two):
+            bx.plot([r[1] for r in two], [r[4] for r in two], "D", label="2 ranks, after builds")
     bx.axhline(3.0, color="gray", ls="--", label="3 kB")
     against_n(bx, "memory per element (kB)")
     fig.suptitle("pair mca with the shock law: the plate of examples/mca-shock, 10 um, "
