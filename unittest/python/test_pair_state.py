@@ -584,7 +584,8 @@ def test_neigh_modify_between_runs_keeps_the_saved_pairs(tmp_path, nprocs):
     """neigh_modify one or page changed between runs makes FixNeighHistory free its pages and
     make new ones (it crashed, or lost links without a word, before the saved pairs were carried
     over): the split run equals the straight one to the last digit, every link kept; a `one`
-    below what an atom keeps is refused, naming it."""
+    below what an atom keeps is refused, naming it, between runs and when a restart file is
+    read."""
     hot = LINK_COUNT + "run 200\n"
     straight = mca_block(hot + "run 200\n" + report("s"))
     for change in ("neigh_modify one 3000", "neigh_modify page 200000", "neigh_modify one 1500 page 30000"):
@@ -600,3 +601,12 @@ def test_neigh_modify_between_runs_keeps_the_saved_pairs(tmp_path, nprocs):
     assert "PAIR_STATE: an atom keeps" in err.stdout and "boost neigh_modify one" in err.stdout, \
         err.stdout[-2000:]
     assert "Segmentation" not in err.stdout + err.stderr
+    # a restart file read with a `one` below what an atom keeps: refused, not written through a
+    # null page
+    restart = mca_block("run 20\nwrite_restart few.restart\nclear\n"
+                        f"plugin load {PLUGIN}\nneigh_modify one 3 page 300\n"
+                        "read_restart few.restart\nrun 0\n")
+    err = subprocess.run([LMP, "-log", "none", "-nocite"], input=restart,
+                         capture_output=True, text=True, cwd=tmp_path, timeout=120)
+    assert "restart file keeps" in err.stdout and "boost neigh_modify one" in err.stdout, \
+        err.stdout[-2000:]
