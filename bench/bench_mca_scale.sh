@@ -38,7 +38,7 @@ one() {  # ranks cells
     /^Ave neighs\/atom/ {nb = $4}
     /^ *Step / {thermo = 1; next}
     thermo && /^Loop time/ {thermo = 0}
-    thermo && $1 ~ /^[0-9]+$/ {energy = $6; broken = $7}
+    thermo && !done && $1 ~ /^[0-9]+$/ {energy = $6; broken = $7}
     END {
       printf "%2d ranks %3d cells: %7d elements, %5.1f neighbours each; Pair %.3f us, Neigh %.3f us per element-step; memory %.2f kB per element (%.2f after the run); energy %s J, %s links broken\n",
         ranks, cells, atoms, nb, 1e6 * pair / (atoms * steps), 1e6 * neigh / (atoms * steps),

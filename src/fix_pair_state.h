@@ -117,7 +117,7 @@ namespace ClusterDyn {
     PairStateLayout layout;               // the list's rows and the saved doubles
     PairStateSlots slots;                 // state_slots(), maxstate of them
     PairStatePages ghosts;    // the ghosts' saved pairs during a list build
-    void size_pages();        // pair_state_pages.h
+    void size_pages();        // the pages' sizes (pair_state_pages.h)
     void first_pages()        // a restart file's atoms before the first init
     {
       allocate_pages();
@@ -140,7 +140,7 @@ namespace ClusterDyn {
       const int m = atom->map(atom->tag[j]);
       return m >= 0 && m < atom->nlocal ? m : j;
     }
-    // after a list build the ghosts keep no saved pairs, and their pages are freed
+    // after a list build the ghosts keep no saved pairs, and their pages go back to one page each
     void drop_ghost_partners()
     {
       for (int g = atom->nlocal; g < atom->nlocal + atom->nghost; g++) npartner[g] = 0;

@@ -2,21 +2,21 @@
    Cluster-dynamics plugin for LAMMPS: the pages of fix PAIR_STATE
    (fix_pair_state.h).
    - Their size: FixNeighHistory::allocate_pages() makes each page hold
-     neigh_modify page pairs, 14 MB of doubles at LAMMPS's defaults (18
-     doubles per pair), and one page of each of its four kinds is mostly
-     unused at any time (60 MB on a small system).  Pages of PAGE_BYTES
-     instead, or of the largest chunk (one atom's neigh_modify one pairs)
-     where that is larger.
+     neigh_modify page pairs (100,000 by default): 14.4 MB for pair mca's
+     18 doubles per pair, and the first pages of its four kinds took 30 MB,
+     mostly empty, on a small system.  Pages of PAGE_BYTES instead, or of
+     the largest chunk (one atom's neigh_modify one pairs) where that is
+     larger.
    - The saved pairs of the owned atoms across new pages: where
      neigh_modify page or one changes between runs, FixNeighHistory's
      init() frees its pages and makes new ones, and the atoms' saved pairs
      pointed into the freed ones (a crash, or links lost without a word);
      they are copied out before and into the new pages after.
    - The ghosts' saved pairs, sent by their owners for a list build
-     (FixPairState::forward_partners()), in pages of their own that are
-     freed after the build: in FixNeighHistory's pages of the owned atoms'
-     pairs they stayed as the pages' high water (0.09 kB per element on 2
-     processors of a wide plate).
+     (FixPairState::forward_partners()), in pages of their own that go back
+     to one page each after the build: in FixNeighHistory's pages of the
+     owned atoms' pairs they stayed as the pages' high water (a 14 MB page
+     per processor on 2 processors of a wide plate).
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_CLUSTERDYN_PAIR_STATE_PAGES_H
@@ -36,7 +36,7 @@ namespace ClusterDyn {
    public:
     static constexpr int PAGE_BYTES = 1 << 18;
 
-    // pages (empty: their contents are dropped) for chunks of at most most values of T
+    // pages (emptied: their contents are dropped) for chunks of at most `most` values of T
     template <class T> static void size(MyPage<T> &pages, int most, Error *error)
     {
       const int page = std::max(most, PAGE_BYTES / (int) sizeof(T));
@@ -82,7 +82,7 @@ namespace ClusterDyn {
       }
     }
 
-    // the ghosts' pages, for at most pairs of doubles values each per atom, empty
+    // the ghosts' pages, for at most `pairs` pairs per atom of `doubles` doubles each; emptied
     void size_ghosts(int pairs, int doubles, Error *error)
     {
       most = pairs;
@@ -90,7 +90,7 @@ namespace ClusterDyn {
       size(ids, most, error);
       size(saved, most * values, error);
     }
-    // a ghost's IDs and doubles for n pairs (null: more than at most)
+    // a ghost's IDs and doubles for n pairs (null: more than `most` pairs)
     tagint *ghost_ids(int n) { return ids.get(n); }
     double *ghost_values(int n) { return saved.get(n * values); }
     void reset()
@@ -98,7 +98,7 @@ namespace ClusterDyn {
       ids.reset();
       saved.reset();
     }
-    // the ghosts' pages freed to one page each (after a list build)
+    // the ghosts' pages freed back to one page each (after a list build)
     void drop(Error *error) { size_ghosts(most, values, error); }
     double bytes() const { return ids.size() + saved.size(); }
 
