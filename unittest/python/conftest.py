@@ -26,6 +26,9 @@ from lammps import lammps
 HERE = os.path.dirname(os.path.abspath(__file__))
 PLUGIN = os.environ["CLUSTERDYN_PLUGIN"]
 LMP = os.environ["CLUSTERDYN_LMP"]
+# the plugin built for a CPU without AVX-512 (-march=x86-64-v3: its spline kernels and pair mca's
+# passes; unittest/CMakeLists.txt)
+AVX2_PLUGIN = os.path.join(os.path.dirname(PLUGIN), "unittest", "clusterdyn_avx2.so")
 PAIR_STYLES = [s + v for s in ("morse/spline", "lj/spline", "mie/spline", "harmonic/spline")
                for v in ("", "/omp", "/gpu")]
 ALL_PAIR_STYLES = PAIR_STYLES + ["mca"]

@@ -12,9 +12,9 @@ import subprocess
 
 import numpy as np
 import pytest
+from conftest import AVX2_PLUGIN as AVX2
 from conftest import LMP, PLUGIN
 
-AVX2 = os.path.join(os.path.dirname(PLUGIN), "unittest", "clusterdyn_avx2.so")
 D, ALPHA, A = 1.3, 5.5, 1.0
 
 # a hot fcc block with two atom types (the kernel's per-type path) or one (its uniform path)
