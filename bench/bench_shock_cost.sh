@@ -5,11 +5,12 @@
 # linear elements with yield (examples/mca-spall/in.plate); aluminium at 400 m/s, no records.
 # Prints each case's median Pair and Loop microseconds per particle-step (LAMMPS's timing
 # breakdown) and the ratios to smd/tlsph.
-# With RUNS=N (N rounds, default 0: none), a whole plate run of each method, alternating, at the
-# examples' steps (theta 0.1, cfl 0.1) and at the steps that keep every reading within 1 % of
-# each method's finest run at 400 and 1000 m/s (theta 0.025, cfl 0.0125 or finer: the tables of
-# examples/mca-shock/time_step_peers.md; smd/tlsph with its pairwise failure, as there): the
-# median loop seconds of a run and their ratio.
+# With RUNS=N (N rounds, default 0: none), a whole plate run at 400 m/s of pair mca and of
+# smd/tlsph (not the linear elements), alternating, at the examples' steps (theta 0.1, cfl 0.1)
+# and at the steps that keep every reading within 1 % of each method's finest run at 400 and
+# 1000 m/s (theta 0.025; cfl 0.0125 or finer: the tables of examples/mca-shock/time_step_peers.md;
+# smd/tlsph with its pairwise failure, as there): the median loop seconds of a run and their
+# ratio.
 #   [RUNS=N] bash bench/bench_shock_cost.sh [BUILD] [repeats]    (BUILD: a folder with env.sh)
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
