@@ -89,10 +89,11 @@ namespace ClusterDyn {
                               dv[2] * d[0],  dv[2] * d[1],  dv[2] * d[2],  dv[0] * dv[0],
                               dv[1] * dv[1], dv[2] * dv[2], dv[0] * dv[1], dv[0] * dv[2],
                               dv[1] * dv[2]};
-      for (int k = 0; k < SUMS; k++) {
-        sums[i][k] += w * s[k];
-        if (jown) sums[j][k] += w * s[k];
-      }
+      double ws[SUMS];    // apart from the rows, so that the two sums run as vectors
+      for (int k = 0; k < SUMS; k++) ws[k] = w * s[k];
+      for (int k = 0; k < SUMS; k++) sums[i][k] += ws[k];
+      if (jown)
+        for (int k = 0; k < SUMS; k++) sums[j][k] += ws[k];
     }
     void finish(Advance how, double dt);
 
