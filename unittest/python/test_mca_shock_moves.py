@@ -2,8 +2,9 @@
 runs (change_box ... remap, displace_atoms) compresses the elements as a run's step would
 (doc/pair_mca.rst "Shock equation of state", the volume), so the pressure after change_box is
 the pressure after the same strain by fix deform, and the pole 1 - 1/s is an error wherever the
-volume crosses it.  Aluminium (test_mca_shock.py), a periodic 6 x 3 x 3 fcc block, uniaxial
-strain 2 %, units si and metal."""
+volume crosses it; under fix deform stretching and shearing the box at once, every element's
+volume is the box's.  Aluminium (test_mca_shock.py), a periodic 6 x 3 x 3 fcc block, strains
+of 2 %, units si and metal."""
 import re
 
 import numpy as np
@@ -49,6 +50,26 @@ def test_change_box_compresses_as_fix_deform_does(units):
     assert jumped[0] == pytest.approx(deformed[0], rel=0.01)
     assert jumped[1] == pytest.approx(deformed[1], rel=0.01)
     assert jumped[0] > 1.5e9 * P      # compressed: 1.8 GPa with the yield, not the deviator's 0.2
+
+
+@pytest.mark.parametrize("units", ["si", "metal"])
+def test_a_box_stretched_and_sheared_by_fix_deform_gives_each_element_its_volume(units):
+    """fix deform stretching the periodic block along z by 2 % while shearing it in y-z (tilt
+    yz 0.2 Lz): every element's volume ratio is the box's, det F = 1.02, as in the uniaxial
+    compression above.  The shear gives the pairs' motions y and z parts at once, so every
+    column of the velocity sums (dv dv^T, yz included) enters the last step's shape."""
+    L = UNITS[units][0]
+    setup = [c.replace("region box block 0 6 0 3 0 3", "region box prism 0 6 0 3 0 3 0 0 0")
+             for c in plate_setup(units, 6, boundary="p p p")]
+    assert any("region box prism" in c for c in setup)
+    with session() as lmp:
+        lmp.commands_list(setup + [
+            "fix 1 all nve/sphere", "run 0 post no", "compute J all property/atom d_mca_dvolume",
+            f"fix 2 all deform 1 z scale 1.02 yz delta {0.2 * 3 * CELL * L} remap x units box",
+            "run 2000 post no", "unfix 2", "velocity all set 0 0 0"])
+        J = volume_ratios(lmp)
+        assert lmp.extract_box()[3] == pytest.approx(0.2 * 3 * CELL * L)    # the tilt yz
+    assert J == pytest.approx(1.02, abs=1e-10)    # 3e-13 off; a velocity sum left out: 1e-8
 
 
 @pytest.mark.parametrize("units", ["si", "metal"])
