@@ -27,6 +27,9 @@ PY = "unittest/python/"
 # component, file, the line's text as it is, as the mutant has it, covering tests (pytest files,
 # or HEADERS: the GoogleTest program of the stateless headers), what it breaks
 HEADERS = "test_headers"
+# the tests of the shock law's elements (the [r13-] mutants)
+SHOCK_ELEMENT_TESTS = [PY + "test_mca_shock.py", PY + "test_mca_shock_moves.py", PY + "test_pair_mca.py",
+                       PY + "test_mca_spall_kinetics.py", PY + "test_mca_energy_budget.py"]
 MUTANTS = [
     ("Mie law (spline_laws.h)", "src/spline_laws.h",
      "fpair = c.kappa * c.c2 / c.a * x * (xn - xm) / r;",
@@ -823,27 +826,27 @@ MUTANTS = [
     ("shock law element: the zz velocity sum M_zz taken as dv_y d_z (mca_element_eos.h) [r13-01]", "src/mca_element_eos.h",
      "                              dv[2] * d[0],  dv[2] * d[1],  dv[2] * d[2],  dv[0] * dv[0],",
      "                              dv[2] * d[0],  dv[2] * d[1],  dv[1] * d[2],  dv[0] * dv[0],",
-     [PY + "test_mca_shock.py", PY + "test_mca_shock_moves.py", PY + "test_pair_mca.py", PY + "test_mca_spall_kinetics.py", PY + "test_mca_energy_budget.py"],
+     SHOCK_ELEMENT_TESTS,
      "M_zz = sum w dv_y d_z: a compression along z does not change J (and K' is wrong); motion along x alone is untouched"),
     ("shock law element: the pressure force's z row takes P_yy for P_zz (mca_element_eos.h) [r13-02]", "src/mca_element_eos.h",
      "      f[2] = -w * (p[4] * d[0] + p[5] * d[1] + p[2] * d[2]);",
      "      f[2] = -w * (p[4] * d[0] + p[5] * d[1] + p[1] * d[2]);",
-     [PY + "test_mca_shock.py", PY + "test_mca_shock_moves.py", PY + "test_pair_mca.py", PY + "test_mca_spall_kinetics.py", PY + "test_mca_energy_budget.py"],
+     SHOCK_ELEMENT_TESTS,
      "f_z from (P_i + P_j)_yy: right only where K^-1 has yy = zz (a cubic lattice compressed along x); a z surface, a z compression or a random packing gets the wrong z force and loses energy"),
     ("shock law element: the shape sums weighted without the link's area (pair_mca.cpp volumetric_strain) [r13-03]", "src/pair_mca.cpp",
      "      eos.add_pair(i, j, p.d, v + C::DPREV, carried / v[C::REF], jown);",
      "      eos.add_pair(i, j, p.d, v + C::DPREV, resp.intact(v[C::KAPPA]) / v[C::REF], jown);",
-     [PY + "test_mca_shock.py", PY + "test_mca_shock_moves.py", PY + "test_pair_mca.py", PY + "test_mca_spall_kinetics.py", PY + "test_mca_energy_budget.py"],
+     SHOCK_ELEMENT_TESTS,
      "w = (1 - D)/r_ref in K and M while the force takes S/r_ref: H cancels S where all areas are equal, but P = p Omega J K^-1 loses 1/S, so the pressure's force is scaled by S (1e-10 m^2 in si: the piston's shock runs at 954 m/s, not 5618)"),
     ("shock law element: the xy shear rate sent to ghosts without its 1/2 (mca_element_eos.cpp) [r13-04]", "src/mca_element_eos.cpp",
      "  const double sym[6] = {grad[0][0], grad[1][1], grad[2][2], 0.5 * (grad[0][1] + grad[1][0]),",
      "  const double sym[6] = {grad[0][0], grad[1][1], grad[2][2], (grad[0][1] + grad[1][0]),",
-     [PY + "test_mca_shock.py", PY + "test_mca_shock_moves.py", PY + "test_pair_mca.py", PY + "test_mca_spall_kinetics.py", PY + "test_mca_energy_budget.py"],
+     SHOCK_ELEMENT_TESTS,
      "the symmetric gradient's xy entry twice H_xy + H_yx over 2: the hourglass spring's affine elongation is wrong under an xy shear only (compression and xz/yz shear untouched)"),
     ("shock law element: a pair's mean stress halved where one element has no volume (mca_element_eos.h) [r13-05]", "src/mca_element_eos.h",
      "      return hi + hj > 0.0 ? (pressures[i][MEAN] + pressures[j][MEAN]) / (hi + hj) : 0.0;",
      "      return hi + hj > 0.0 ? (pressures[i][MEAN] + pressures[j][MEAN]) / 2.0 : 0.0;",
-     [PY + "test_mca_shock.py", PY + "test_mca_shock_moves.py", PY + "test_pair_mca.py", PY + "test_mca_spall_kinetics.py", PY + "test_mca_energy_budget.py"],
+     SHOCK_ELEMENT_TESTS,
      "the mean of -p over two elements even where one has no pressure (a linear-law partner, a fragment): a mixed-law or fragment pair's damage reads half the stress"),
 ]
 
