@@ -418,15 +418,17 @@ def two_types(first, second, fraction=0.0):
         "velocity flyer set 500 0 0 units box", "fix 1 all nve/sphere"]
 
 
-def lone_link_after_tension(units, share):
+def lone_link_after_tension(units, share, lone_law="shock"):
     """A block of shock elements (type 1, unbreakable) whose internal energy is set to u0 < 0,
     so that at J = 1 each has p = Gamma0 u0 = -T (a tension T = 0.5 GPa), and one element of
-    type 2 (the same law, strength share T) linked to a surface element of the block by its
-    only link, so that its links span no volume and it has no pressure.  Returns the lone
+    type 2 (strength share T; the same law, or lone_law "linear": the linear law of the same
+    bulk and shear moduli) linked to a surface element of the block by its only link, so that
+    it has no pressure (its links span no volume, or its law has none).  Returns the lone
     element's links after the evaluation at that tension."""
     L, V, R, P, _ = UNITS[units]
     T = 0.5e9
     coeff, density = material(units, yield_stress=0.0)
+    linear = f"bulk {K * P} shear {G * P}"
     lone = (3.5 * CELL + D, 0.5 * CELL, CELL)    # D from the surface element (3.5, 0.5, 1) CELL
     with session() as lmp:
         lmp.commands_list([
@@ -437,7 +439,8 @@ def lone_link_after_tension(units, share):
             "create_atoms 2 single " + " ".join(str(c * L) for c in lone) + " units box",
             f"neighbor {0.25 * D * L} bin", f"set group all diameter {D * L}",
             f"pair_style mca fraction {PHI} tolerance 0.02", f"pair_coeff 1 1 {coeff}",
-            f"pair_coeff 2 2 {coeff} strength {share * T * P}", f"set group all density {density}",
+            f"pair_coeff 2 2 {coeff if lone_law == 'shock' else linear} strength {share * T * P}",
+            f"set group all density {density}",
             "fix 1 all nve/sphere", "compute links all links/atom", "run 0 post no"])
         n = lmp.extract_global("nlocal")
         lone_atom = lmp.numpy.extract_atom("type")[:n] == 2
@@ -449,13 +452,14 @@ def lone_link_after_tension(units, share):
 
 
 @pytest.mark.parametrize("units", ["si", "metal"])
-def test_a_pair_with_one_pressure_reads_that_pressure_whole(units):
+@pytest.mark.parametrize("lone_law", ["shock", "linear"])
+def test_a_pair_with_one_pressure_reads_that_pressure_whole(units, lone_law):
     """A pair of which one element has a pressure (the other a linear-law element, or one whose
     links span no volume) reads that element's -p as its mean stress, not half of it: the lone
     element's link, in tension T from the block's pressure alone (its length unchanged), breaks
     at a strength of 0.95 T and holds at 1.05 T."""
-    assert lone_link_after_tension(units, 0.95) == 0.0
-    assert lone_link_after_tension(units, 1.05) == 1.0
+    assert lone_link_after_tension(units, 0.95, lone_law) == 0.0
+    assert lone_link_after_tension(units, 1.05, lone_law) == 1.0
 
 
 def test_a_linear_material_is_not_changed_by_a_shock_material_beside_it():
