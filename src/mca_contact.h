@@ -111,11 +111,8 @@ namespace ClusterDyn {
         const double a2 = dot(rotation, rotation);
         if (a2 == 0.0) return;
         for (int m = 0; m < 3; m++) phi[m] = rotation[m];
-        if (a2 < SERIES) {    // the constants are reciprocals, multiplied
-          c = 1.0 - 0.5 * a2 * (1.0 - a2 * (1.0 / 12.0) * (1.0 - a2 * (1.0 / 30.0)));
-          sa = 1.0 - a2 * (1.0 / 6.0) * (1.0 - a2 * (1.0 / 20.0) * (1.0 - a2 * (1.0 / 42.0)));
-          ca = 0.5 * (1.0 - a2 * (1.0 / 12.0) *
-                                (1.0 - a2 * (1.0 / 30.0) * (1.0 - a2 * (1.0 / 56.0))));
+        if (a2 < SERIES) {
+          series(a2, c, sa, ca);
         } else {
           const double a = sqrt(a2);
           c = cos(a);
@@ -124,6 +121,17 @@ namespace ClusterDyn {
         }
         none = false;
       }
+      // the same turn where a^2 < SERIES is known: no branch to the sine, so that a batch of
+      // turns runs as vectors (mca_link_turns.h)
+      static Turn in_series(const double *rotation)
+      {
+        Turn turn;
+        const double a2 = dot(rotation, rotation);
+        for (int m = 0; m < 3; m++) turn.phi[m] = rotation[m];
+        series(a2, turn.c, turn.sa, turn.ca);
+        turn.none = a2 == 0.0;
+        return turn;
+      }
       void apply(double *v) const
       {
         if (none) return;
@@ -131,6 +139,15 @@ namespace ClusterDyn {
         cross(phi, v, pv);
         const double pdv = dot(phi, v) * ca;
         for (int m = 0; m < 3; m++) v[m] = v[m] * c + pv[m] * sa + phi[m] * pdv;
+      }
+
+     private:
+      static void series(double a2, double &c, double &sa, double &ca)
+      {    // the constants are reciprocals, multiplied
+        c = 1.0 - 0.5 * a2 * (1.0 - a2 * (1.0 / 12.0) * (1.0 - a2 * (1.0 / 30.0)));
+        sa = 1.0 - a2 * (1.0 / 6.0) * (1.0 - a2 * (1.0 / 20.0) * (1.0 - a2 * (1.0 / 42.0)));
+        ca = 0.5 *
+            (1.0 - a2 * (1.0 / 12.0) * (1.0 - a2 * (1.0 / 30.0) * (1.0 - a2 * (1.0 / 56.0))));
       }
     };
 

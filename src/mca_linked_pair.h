@@ -49,17 +49,16 @@ namespace ClusterDyn {
     {
     }
 
-    // the trial stresses of this step: the effective normal stress before any return (its
-    // many-body part: volumetric), returned, and the tangential stress after this step's slide
-    // (stored in v with its energy ET; turn: null where the pair does not turn; dut: the slide)
-    static double trial(double *v, double a, const McaPairFrame &p, double volumetric,
-                        const C::Turn *turn, double *dut)
+    // the trial tangential stress of this step: after this step's slide (stored in v with its
+    // energy ET; turn: null where the pair does not turn); a batch of links in the plastic pass
+    // slides side by side (mca_link_turns.h)
+    static void slide(double *v, double a, const McaPairFrame &p, const C::Turn *turn)
     {
-      C::slide(v + C::TAU, v + C::DPREV, p.d, p.n, turn, a, dut, v + C::ET);
-      return elastic_stress(v, a, p.r) + volumetric;
+      C::slide(v + C::TAU, v + C::DPREV, p.d, p.n, turn, a, nullptr, v + C::ET);
     }
 
-    // the elastic part of the effective normal stress at separation r
+    // the elastic part of the effective normal stress at separation r (the trial normal stress
+    // before any return, with the many-body part)
     static double elastic_stress(const double *v, double a, double r)
     {
       return a * (r - v[C::REF] - v[C::EPL]);
@@ -93,9 +92,20 @@ namespace ClusterDyn {
     static void rotate(double *v, const C::Turn &turn, const double *omega_i,
                        const double *omega_j, double dt)
     {
-      double *rot = v + C::ROT;
+      double step[3];
+      rotation_step(omega_i, omega_j, dt, step);
+      rotate(v + C::ROT, turn, step);
+    }
+    // ... with the relative rotation rot alone, and this step's advance dt (omega_j - omega_i)
+    static void rotate(double *rot, const C::Turn &turn, const double *step)
+    {
       turn.apply(rot);
-      for (int k = 0; k < 3; k++) rot[k] += dt * (omega_j[k] - omega_i[k]);
+      for (int k = 0; k < 3; k++) rot[k] += step[k];
+    }
+    static void rotation_step(const double *omega_i, const double *omega_j, double dt,
+                              double *step)
+    {
+      for (int k = 0; k < 3; k++) step[k] = dt * (omega_j[k] - omega_i[k]);
     }
 
     // the elastic elongation at separation r: r - r_ref - e_p

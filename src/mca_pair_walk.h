@@ -46,8 +46,9 @@ namespace ClusterDyn {
   }
 
   struct McaPairFrame {
-    double d[3], rsq, r = 0.0, n[3] = {0.0, 0.0, 0.0}, qi = 0.0, qj = 0.0;
+    double d[3] = {0.0, 0.0, 0.0}, rsq = 0.0, r = 0.0, n[3] = {0.0, 0.0, 0.0}, qi = 0.0, qj = 0.0;
 
+    McaPairFrame() = default;
     McaPairFrame(double *const *x, int i, int j) :
         d{x[j][0] - x[i][0], x[j][1] - x[i][1], x[j][2] - x[i][2]}, rsq(McaContact::dot(d, d))
     {
@@ -65,8 +66,15 @@ namespace ClusterDyn {
     McaContact::Turn turn(const double *omega_i, const double *omega_j, double dt) const
     {
       double spin[3];
-      for (int k = 0; k < 3; k++) spin[k] = dt * (qi * omega_i[k] + qj * omega_j[k]) / r;
+      rotation(omega_i, omega_j, dt, spin);
       return McaContact::Turn(spin);
+    }
+    // the turn's rotation vector w dt (the reciprocal written out: every pass that inlines this
+    // takes the same roundings, whatever -freciprocal-math makes of a division there)
+    void rotation(const double *omega_i, const double *omega_j, double dt, double *spin) const
+    {
+      const double inverse = 1.0 / r;
+      for (int k = 0; k < 3; k++) spin[k] = dt * (qi * omega_i[k] + qj * omega_j[k]) * inverse;
     }
   };
 

@@ -12,6 +12,7 @@
 
 #include "pair_mca.h"
 
+#include "mca_link_turns.h"
 #include "mca_linked_pair.h"
 #include "mca_pressure_pair.h"
 #include "mca_unlinked_pair.h"
@@ -147,9 +148,9 @@ void PairMCA::volumetric_strain(const StatePass &pass)
 
 /* ----------------------------------------------------------------------
    plasticity: every linked pair's trial stresses (tau stored, sigma in
-   SIG) and its relative rotation turned, the elements' stresses from them
-   (Love's formula), then each element's radial return factor and mean
-   stress, sent to ghosts
+   SIG) and its relative rotation turned (side by side, mca_link_turns.h),
+   the elements' stresses from them (Love's formula, in the list's order),
+   then each element's radial return factor and mean stress, to ghosts
 ------------------------------------------------------------------------- */
 
 void PairMCA::plastic_trial(const StatePass &pass)
@@ -161,26 +162,33 @@ void PairMCA::plastic_trial(const StatePass &pass)
   const bool moving = elements_turn();
   const double dt = update->dt;
   stress.zero(nlocal + atom->nghost);
-
+  McaLinkTurns links;
+  const auto trials = [&] {
+    links.advance();
+    for (int b = 0; b < links.size(); b++) {
+      const int i = links.i(b), j = links.j(b);
+      double *v = links.values(b);
+      v[C::SIG] = normal_trial(i, j, v, links.pair(b).r);
+      const double intact = types.model(atom->type[i], atom->type[j]).response.intact(v[C::KAPPA]);
+      stress.add_trial(i, j, links.pair(b), v, intact, stiffness.half(i), stiffness.half(j),
+                       newton || j < nlocal);
+    }
+    links.clear();
+  };
   walk_pairs(list, pass, [&](int i, int j, int jj) {
     if (!state_now(pass.words[i][jj])) return;
     double *v = pass.pair_values(i, jj);
     McaPairFrame p(atom->x, i, j);
     if (p.rsq == 0.0) coincident_elements(lmp, i, j);
     p.orient(radius[i], radius[j]);
-    const C::Turn turn = p.turn(omega[i], omega[j], dt);
     // this step's motion of the pair, for the trapezoid rule of the plastic work (with a shock
     // law the volume pass has taken it)
     if (!eos.active()) v[C::DR] = moving ? C::motion(v, sqrt(p.rsq)) : 0.0;
-    double dut[3];
-    v[C::SIG] = trial_stresses(i, j, v, p, moving ? &turn : nullptr, dut);
-    v[C::DTAU] = moving ? C::dot(v + C::TAU, dut) : 0.0;
-    // the link's relative rotation with the same turn, which the force pass then needs not take
-    if (moving) McaLinkedPair::rotate(v, turn, omega[i], omega[j], dt);
-    const double intact = types.model(atom->type[i], atom->type[j]).response.intact(v[C::KAPPA]);
-    stress.add_trial(i, j, p, v, intact, stiffness.half(i), stiffness.half(j),
-                     newton || j < nlocal);
+    if (links.add(i, j, v, p, C::series(stiffness.half(i), stiffness.half(j)), omega[i], omega[j],
+                  dt, moving))
+      trials();
   });
+  trials();
   stress.to_owners(false);
   plasticity.return_map(stress.trial(), types.scaled());
 }
@@ -287,15 +295,6 @@ void PairMCA::pair_forces(const StatePass &pass, StateTally &changes)
       if (jown) stress.add(j, p.qj, sym, linked);
     }
   });
-}
-
-// a linked pair's trial stresses (McaLinkedPair::trial) with its many-body part
-double PairMCA::trial_stresses(int i, int j, double *v, const McaPairFrame &p, const C::Turn *turn,
-                               double *dut)
-{
-  const double ai = stiffness.half(i), aj = stiffness.half(j);
-  return McaLinkedPair::trial(v, C::series(ai, aj), p,
-                              setting.manybody ? manybody.pair_stress(i, j, ai, aj) : 0.0, turn, dut);
 }
 
 // a setup re-evaluates the same positions; a minimizer does not turn the elements
