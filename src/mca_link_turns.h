@@ -8,9 +8,10 @@
    dt (omega_j - omega_i) (McaLinkedPair::rotate): the same operations in
    the same order, on up to N links side by side, so that the compiler
    takes them as vectors (the links' state is copied into arrays by
-   field).  A batch in which some link turns by a = 1e-2 or more per step
-   (beyond the turn's Taylor series) takes the scalar functions link by
-   link.  Holds the batch only; stateless otherwise (as spline_laws.h).
+   field).  A batch in which some link turns by 1e-2 rad or more in a step
+   (|w dt|^2 >= Turn::SERIES: beyond the turn's Taylor series) takes the
+   scalar functions link by link.  Holds the batch only; stateless
+   otherwise (as spline_laws.h).
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_CLUSTERDYN_MCA_LINK_TURNS_H
@@ -29,7 +30,7 @@ namespace ClusterDyn {
     using C = McaContact;
 
    public:
-    static constexpr int N = 16;    // links side by side: two vectors of 8 doubles
+    static constexpr int N = 16;    // links side by side: two AVX-512 vectors of 8 doubles
 
     // link v of elements i and j at frame p (oriented), a the stiffness of its halves in
     // series; moving: a step of dynamics (else the link neither turns nor rotates, and its
