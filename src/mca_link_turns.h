@@ -21,8 +21,6 @@
 #include "mca_linked_pair.h"
 #include "mca_pair_walk.h"
 
-#include <cmath>
-
 namespace LAMMPS_NS {
 namespace ClusterDyn {
 
