@@ -51,7 +51,7 @@ namespace LAMMPS_NS {
 class FixPropertyAtom;
 namespace ClusterDyn {
 
-  class McaElementEos final : protected Pointers, public McaPlasticHeat {
+  class McaElementEos final : protected Pointers {
    public:
     // the columns summed onto owners (K: 6, M = sum w dx x^T: 9, N = sum w dx dx^T: 6; the
     // last step's K' = K - M - M^T + N and M' = M - N) and sent to ghosts (P: 6, the symmetric
@@ -151,11 +151,7 @@ namespace ClusterDyn {
     // the plastic work of a pair heats its elements, shared as its elongation (a_i, a_j: the
     // half stiffnesses); zero, add, then finish (summed onto owners, into u)
     void begin_heat(int nall);
-    void add_heat(int i, int j, double work, double ai, double aj, bool jown) override
-    {
-      heat[i][0] += work * aj / (ai + aj);
-      if (jown) heat[j][0] += work * ai / (ai + aj);
-    }
+    McaElementShares heat_shares() const { return {active() ? heat : nullptr}; }
     void finish_heat();
 
     // the elements' internal energies u Omega added to the total and per atom (null: not

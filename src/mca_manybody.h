@@ -22,7 +22,6 @@
 #ifndef LMP_CLUSTERDYN_MCA_MANYBODY_H
 #define LMP_CLUSTERDYN_MCA_MANYBODY_H
 
-#include "mca_element_eos.h"
 #include "mca_exchange.h"
 #include "mca_material.h"
 #include "mca_pair_changes.h"
@@ -57,8 +56,7 @@ namespace ClusterDyn {
     void begin_strain(int nall);
     void add_elongation(int i, int j, double elong, double ai, double aj, bool jown)
     {
-      theta[i][0] += elong * aj / (ai + aj);
-      if (jown) theta[j][0] += elong * ai / (ai + aj);
+      McaElementShares{theta}.add(0, i, j, elong, ai, aj, jown);
     }
     void finish_strain();
     // a modulus added to element i's lambda from here to the next begin_strain() (owners and
@@ -77,16 +75,11 @@ namespace ClusterDyn {
 
     // the changes of theta this step makes (volume changes dv of pairs, shared as elongations)
     void begin_changes(int nall);
-    void add_change(int column, int i, int j, double dv, double ai, double aj,
-                    bool jown) override
-    {
-      dtheta[i][column] += dv * aj / (ai + aj);
-      if (jown) dtheta[j][column] += dv * ai / (ai + aj);
-    }
+    McaElementShares volume_changes() const { return {dtheta}; }
     // the energies they release: state changes to the jump, damage and plastic flow to work
     // (and the plastic flow's into the element's heat, where it has a shock law: heat)
     void tally_changes(StateTally &changes, int damage_work, int plastic_work,
-                       McaElementEos *heat);
+                       McaElementShares heat);
 
     // the elements' energies lambda Omega theta^2 / 2 added to the total and per atom (each
     // null: not wanted)

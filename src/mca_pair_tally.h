@@ -8,7 +8,7 @@
    with a ghost counts w = 1/2 with newton off, as both processors see it),
    the dissipated works, the changes of volume that the many-body term
    follows, and the plastic work that heats elements with a shock equation
-   of state, through their interfaces (mca_pair_changes.h).
+   of state, into the elements' rows (mca_pair_changes.h).
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_CLUSTERDYN_MCA_PAIR_TALLY_H
@@ -38,20 +38,21 @@ namespace ClusterDyn {
   struct McaPairTally {
     StateTally &changes;
     double w;                 // 1, or 1/2 for a pair with a ghost and newton off
-    McaVolumeChanges *volume;    // null: the many-body term does not follow the changes
+    McaElementShares volume;  // the elements' volume changes (McaVolumeChanges' columns); none:
+                              // the many-body term does not follow them
     int i, j;
     double ai, aj;            // the elements' half stiffnesses
     bool jown;                // j's side is tallied here
-    McaPlasticHeat *heat;        // null: no element takes the plastic work as heat
+    McaElementShares heat;    // none: no element takes the plastic work as heat
 
     void work(McaWork kind, double energy) const
     {
       changes.work[kind] += w * energy;
-      if (kind == WORK_PLASTIC && heat) heat->add_heat(i, j, energy, ai, aj, jown);
+      if (kind == WORK_PLASTIC && heat) heat.add(0, i, j, energy, ai, aj, jown);
     }
     void volume_change(int column, double dv) const
     {
-      if (volume) volume->add_change(column, i, j, dv, ai, aj, jown);
+      if (volume) volume.add(column, i, j, dv, ai, aj, jown);
     }
   };
 

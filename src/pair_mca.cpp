@@ -97,7 +97,7 @@ void PairMCA::compute(int eflag, int vflag)
                      *this, stress.wanted() ? &stress : nullptr);
   if (stress.wanted()) stress.to_owners(true);
   if (tracks_changes)
-    manybody.tally_changes(changes, WORK_DAMAGE, WORK_PLASTIC, eos.active() ? &eos : nullptr);
+    manybody.tally_changes(changes, WORK_DAMAGE, WORK_PLASTIC, eos.heat_shares());
   if (eos.active()) eos.finish_heat();
   if (setting.manybody && eflag) manybody.tally_energy(eflag_global ? &eng_vdwl : nullptr,
                                                        eflag_atom ? eatom : nullptr);
@@ -217,6 +217,8 @@ void PairMCA::pair_forces(const StatePass &pass, StateTally &changes)
   if (stress.wanted()) stress.zero(nall);
   if (tracks_changes) manybody.begin_changes(nall);
   if (eos.active()) eos.begin_heat(nall);
+  const McaElementShares volumes = tracks_changes ? manybody.volume_changes() : McaElementShares(),
+                         heat = eos.heat_shares();
 
   walk_pairs(list, pass, [&](int i, int j, int jj) {
     const double ri = radius[i], rj = radius[j];
@@ -237,8 +239,7 @@ void PairMCA::pair_forces(const StatePass &pass, StateTally &changes)
     p.orient(ri, rj);
     const double ai = stiffness.half(i), aj = stiffness.half(j), a = C::series(ai, aj);
     const bool jown = newton || j < nlocal;
-    const McaPairTally tally{changes, jown ? 1.0 : 0.5, tracks_changes ? &manybody : nullptr,
-                             i, j, ai, aj, jown, eos.active() ? &eos : nullptr};
+    const McaPairTally tally{changes, jown ? 1.0 : 0.5, volumes, i, j, ai, aj, jown, heat};
     // the turn of the pair's stored vectors; a link's, with plasticity, turned in the plastic pass
     const bool turned = linked && plastic;
     const C::Turn turn = moving && !turned ? p.turn(omega[i], omega[j], dt) : C::Turn();

@@ -32,6 +32,9 @@ SHOCK_ELEMENT_TESTS = [PY + "test_mca_shock.py", PY + "test_mca_shock_moves.py",
                        PY + "test_mca_spall_kinetics.py", PY + "test_mca_energy_budget.py"]
 # the tests of the plastic pass's batched turns of the links (mca_link_turns.h; the [r14-] mutants)
 LINK_TURNS_TESTS = [HEADERS, PY + "test_pair_mca.py", PY + "test_mca_shock.py", PY + "test_mca_response.py"]
+# the tests of the pairs' shares of volume changes and plastic heat in their elements' rows
+# (mca_pair_changes.h, mca_pair_tally.h; the [r15-] mutants)
+SHARES_TESTS = [HEADERS, PY + "test_mca_energy_budget.py", PY + "test_mca_shock.py", PY + "test_pair_mca.py"]
 MUTANTS = [
     ("Mie law (spline_laws.h)", "src/spline_laws.h",
      "fpair = c.kappa * c.c2 / c.a * x * (xn - xm) / r;",
@@ -77,10 +80,11 @@ MUTANTS = [
      "v[C::AREA] = 0.5 * (si + sj);",
      "v[C::AREA] = si;",
      [PY + "test_pair_mca.py"], "a link's area from one element only"),
-    ("MCA many-body (mca_manybody.h)", "src/mca_manybody.h",
-     "theta[i][0] += elong * aj / (ai + aj);",
-     "theta[i][0] += elong * ai / (ai + aj);",
-     [PY + "test_pair_mca.py"], "an element takes its partner's share of the elongation"),
+    ("MCA element shares (mca_pair_changes.h)", "src/mca_pair_changes.h",
+     "rows[i][column] += x * aj / (ai + aj);",
+     "rows[i][column] += x * ai / (ai + aj);",
+     [HEADERS, PY + "test_pair_mca.py"],
+     "an element takes its partner's share of the elongation (and of the volume changes and heat)"),
     ("MCA shock law (mca_shock_eos.h)", "src/mca_shock_eos.h",
      "return hugoniot_pressure(eta) + gamma * (u - hugoniot_energy(eta));",
      "return hugoniot_pressure(eta) + gamma * (u + hugoniot_energy(eta));",
@@ -881,6 +885,36 @@ MUTANTS = [
      "                  dt, true))",
      LINK_TURNS_TESTS,
      "a setup (each run's start) and every minimizer iteration turn TAU and DPREV by w dt again and advance ROT by dt (omega_j - omega_i) where the elements spin: a run split in two differs from one run, and a minimization after dynamics drifts the links' rotation"),
+    ("element shares: j's share added to its row even where j's side is not tallied here (mca_pair_changes.h McaElementShares::add) [r15-01]", "src/mca_pair_changes.h",
+     "      if (jown) rows[j][column] += x * ai / (ai + aj);",
+     "      rows[j][column] += x * ai / (ai + aj);",
+     SHARES_TESTS,
+     "with newton off a pair with a ghost j adds j's share on both processors and to_owners sums the ghost row onto j's owner, so j gets its elongation, volume changes and plastic heat twice (theta, the many-body energy and the shock heat differ between newton on and off, and across a processor boundary)"),
+    ("element shares: the damage work heats the elements instead of the plastic work (mca_pair_tally.h McaPairTally::work) [r15-02]", "src/mca_pair_tally.h",
+     "      if (kind == WORK_PLASTIC && heat) heat.add(0, i, j, energy, ai, aj, jown);",
+     "      if (kind == WORK_DAMAGE && heat) heat.add(0, i, j, energy, ai, aj, jown);",
+     SHARES_TESTS,
+     "shock-law elements take the pairs' damage work as heat and none of their plastic work, so u and the pressure of plastically flowing elements are wrong and the energy budget (plastic work vs. heat in u) does not close"),
+    ("element shares: every volume change booked in the state-change column (mca_pair_tally.h McaPairTally::volume_change) [r15-03]", "src/mca_pair_tally.h",
+     "      if (volume) volume.add(column, i, j, dv, ai, aj, jown);",
+     "      if (volume) volume.add(0, i, j, dv, ai, aj, jown);",
+     SHARES_TESTS,
+     "damage, plastic and motion volume changes all land in CHANGE_STATE, so the many-body term releases their energy into ejump instead of the damage and plastic works and the plastic lag over the step's motion is lost (the works in pvector and the energy budget split are wrong)"),
+    ("element shares: the heat rows handed over only where no element has a shock law (mca_element_eos.h heat_shares) [r15-04]", "src/mca_element_eos.h",
+     "    McaElementShares heat_shares() const { return {active() ? heat : nullptr}; }",
+     "    McaElementShares heat_shares() const { return {active() ? nullptr : heat}; }",
+     SHARES_TESTS,
+     "with a shock equation of state the pairs' and the many-body term's plastic work never reaches the elements' heat rows, so u stays cold under plastic flow (the shock heating, pressure and energy budget tests see the missing heat)"),
+    ("element shares: the many-body term's damage release heats the element instead of its plastic release (mca_manybody.cpp tally_changes) [r15-05]", "src/mca_manybody.cpp",
+     "    if (heat) heat.add(0, i, i, released[CHANGE_PLASTIC], 0.0, 1.0, false);    // all to i",
+     "    if (heat) heat.add(0, i, i, released[CHANGE_DAMAGE], 0.0, 1.0, false);    // all to i",
+     SHARES_TESTS,
+     "a shock-law element takes the energy its theta releases by damage as heat while the plastic release (and the lag over the motion) counted in the plastic work is not heat, so u and the energy budget are off whenever the many-body term follows plastic flow or damage"),
+    ("element shares: the many-body volume-change rows handed to tally_changes as the heat rows (pair_mca.cpp compute) [r15-06]", "src/pair_mca.cpp",
+     "    manybody.tally_changes(changes, WORK_DAMAGE, WORK_PLASTIC, eos.heat_shares());",
+     "    manybody.tally_changes(changes, WORK_DAMAGE, WORK_PLASTIC, manybody.volume_changes());",
+     SHARES_TESTS,
+     "the many-body plastic release goes into dtheta's state-change column after it was read instead of the shock-law elements' heat, so that share of the plastic work never reaches u (the shock and energy budget tests with plastic flow see less heat than plastic work)"),
 ]
 
 
