@@ -13,6 +13,7 @@
 #define LMP_CLUSTERDYN_MCA_ELEMENT_STIFFNESS_H
 
 #include "mca_material.h"
+#include "mca_pair_halves.h"
 #include "pointers.h"
 
 #include <vector>
@@ -31,6 +32,8 @@ namespace ClusterDyn {
     void compute(const std::vector<McaMaterial> &scaled, bool springs);
 
     double half(int i) const { return a[i]; }
+    // the halves of pair ij, with the reciprocal of their sum
+    McaPairHalves pair(int i, int j) const { return McaPairHalves(a[i], a[j]); }
     const double *halves() const { return a; }
     // b_i under the pair's mean pressure |p| = squeeze
     double spring(int i, double squeeze) const { return b[i][0] + b[i][1] * squeeze; }

@@ -13,6 +13,7 @@
 #include "mca_contact.h"
 #include "mca_element.h"
 #include "mca_exchange.h"
+#include "mca_pair_halves.h"
 #include "mca_pair_walk.h"
 #include "pointers.h"
 
@@ -54,13 +55,13 @@ namespace ClusterDyn {
       rows[i][MEAN_SUM] += weight * sigma;
       rows[i][MEAN_WEIGHT] += weight;
     }
-    // a linked pair's trial stresses (v: its state, SIG and TAU; intact: 1 - D; ai, aj: the
-    // half stiffnesses) on element i and, where jown, j: its share of Love's sum, and its
+    // a linked pair's trial stresses (v: its state, SIG and TAU; intact: 1 - D; halves: its
+    // elements' half stiffnesses) on element i and, where jown, j: its share of Love's sum, and its
     // normal stress in the mean its elements' pairs return about, weighted by S w / ((1 - D)
     // a), w the element's share of the pair's elongation, so that a return by one phi about it
     // keeps the element's volume theta and does work sum S sigma dp >= 0
     void add_trial(int i, int j, const McaPairFrame &p, const double *v, double intact,
-                   double ai, double aj, bool jown)
+                   const McaPairHalves &halves, bool jown)
     {
       using C = McaContact;
       const double s = intact * v[C::AREA];
@@ -69,11 +70,12 @@ namespace ClusterDyn {
       for (int k = 0; k < 3; k++) fi[k] = s * (v[C::SIG] * p.n[k] + tau[k]);
       McaElement::dyad(p.n, fi, sym);
       add(i, p.qi, sym, 0);
-      const double weight = v[C::AREA] / (intact * C::series(ai, aj) * (ai + aj));
-      add_mean(i, weight * aj, intact * v[C::SIG]);
+      // S w_i / ((1 - D) a) = S / ((1 - D) a_i a_j) a_j
+      const double weight = v[C::AREA] / (intact * halves.ai * halves.aj);
+      add_mean(i, weight * halves.aj, intact * v[C::SIG]);
       if (jown) {
         add(j, p.qj, sym, 0);
-        add_mean(j, weight * ai, intact * v[C::SIG]);
+        add_mean(j, weight * halves.ai, intact * v[C::SIG]);
       }
     }
     // the sums onto their owners, divided by the volume (energy/volume; in pressure units if

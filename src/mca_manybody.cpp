@@ -85,7 +85,7 @@ void McaManybody::tally_changes(StateTally &changes, int damage_work, int plasti
     changes.ejump += released[CHANGE_STATE];
     changes.work[damage_work] += released[CHANGE_DAMAGE];
     changes.work[plastic_work] += released[CHANGE_PLASTIC];
-    if (heat) heat.add(0, i, i, released[CHANGE_PLASTIC], 0.0, 1.0, false);    // all to i
+    if (heat) heat.add(0, i, i, released[CHANGE_PLASTIC], McaPairHalves(0.0, 1.0), false);    // all to i
   }
 }
 

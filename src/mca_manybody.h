@@ -54,23 +54,23 @@ namespace ClusterDyn {
 
     // the volumetric strain: zero, the pairs' elongations (share by stiffness), then finish
     void begin_strain(int nall);
-    void add_elongation(int i, int j, double elong, double ai, double aj, bool jown)
+    void add_elongation(int i, int j, double elong, const McaPairHalves &halves, bool jown)
     {
-      McaElementShares{theta}.add(0, i, j, elong, ai, aj, jown);
+      McaElementShares{theta}.add(0, i, j, elong, halves, jown);
     }
     void finish_strain();
     // a modulus added to element i's lambda from here to the next begin_strain() (owners and
     // ghosts alike): the bulk modulus of a shock-law element whose links span no volume
     void add_modulus(int i, double k) { extra[i] = k; }
 
-    // the normal stress the many-body term adds to linked pair ij (a_i, a_j: half stiffnesses)
-    double pair_stress(int i, int j, double ai, double aj) const
+    // the normal stress the many-body term adds to linked pair ij (its elements' halves)
+    double pair_stress(int i, int j, const McaPairHalves &halves) const
     {
       const std::vector<McaMaterial> &m = *scaled;
       const int *type = atom->type;
-      return (aj * (m[type[i]].lambda + extra[i]) * theta[i][0] +
-              ai * (m[type[j]].lambda + extra[j]) * theta[j][0]) /
-          (ai + aj);
+      return (halves.aj * (m[type[i]].lambda + extra[i]) * theta[i][0] +
+              halves.ai * (m[type[j]].lambda + extra[j]) * theta[j][0]) *
+          halves.inverse;
     }
 
     // the changes of theta this step makes (volume changes dv of pairs, shared as elongations)

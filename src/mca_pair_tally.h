@@ -41,18 +41,18 @@ namespace ClusterDyn {
     McaElementShares volume;  // the elements' volume changes (McaVolumeChanges' columns); none:
                               // the many-body term does not follow them
     int i, j;
-    double ai, aj;            // the elements' half stiffnesses
+    McaPairHalves halves;     // the elements' half stiffnesses
     bool jown;                // j's side is tallied here
     McaElementShares heat;    // none: no element takes the plastic work as heat
 
     void work(McaWork kind, double energy) const
     {
       changes.work[kind] += w * energy;
-      if (kind == WORK_PLASTIC && heat) heat.add(0, i, j, energy, ai, aj, jown);
+      if (kind == WORK_PLASTIC && heat) heat.add(0, i, j, energy, halves, jown);
     }
     void volume_change(int column, double dv) const
     {
-      if (volume) volume.add(column, i, j, dv, ai, aj, jown);
+      if (volume) volume.add(column, i, j, dv, halves, jown);
     }
   };
 

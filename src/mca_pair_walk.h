@@ -47,6 +47,7 @@ namespace ClusterDyn {
 
   struct McaPairFrame {
     double d[3] = {0.0, 0.0, 0.0}, rsq = 0.0, r = 0.0, n[3] = {0.0, 0.0, 0.0}, qi = 0.0, qj = 0.0;
+    double inverse = 0.0;    // 1 / r (orient()): one division for the direction and the turn
 
     McaPairFrame() = default;
     McaPairFrame(double *const *x, int i, int j) :
@@ -58,7 +59,8 @@ namespace ClusterDyn {
     void orient(double ri, double rj)
     {
       r = sqrt(rsq);
-      for (int k = 0; k < 3; k++) n[k] = d[k] / r;
+      inverse = 1.0 / r;
+      for (int k = 0; k < 3; k++) n[k] = d[k] * inverse;
       qi = r * ri / (ri + rj);
       qj = r - qi;
     }
@@ -69,11 +71,10 @@ namespace ClusterDyn {
       rotation(omega_i, omega_j, dt, spin);
       return McaContact::Turn(spin);
     }
-    // the turn's rotation vector w dt (the reciprocal written out: every pass that inlines this
-    // takes the same roundings, whatever -freciprocal-math makes of a division there)
+    // the turn's rotation vector w dt (with the reciprocal orient() took: every pass that
+    // inlines this takes the same roundings, whatever -freciprocal-math makes of a division)
     void rotation(const double *omega_i, const double *omega_j, double dt, double *spin) const
     {
-      const double inverse = 1.0 / r;
       for (int k = 0; k < 3; k++) spin[k] = dt * (qi * omega_i[k] + qj * omega_j[k]) * inverse;
     }
   };

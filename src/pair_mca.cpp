@@ -125,7 +125,7 @@ void PairMCA::volumetric_strain(const StatePass &pass)
     const double carried = resp.intact(v[C::KAPPA]) * v[C::AREA], r = sqrt(p.rsq);
     const double elong = carried * McaLinkedPair::elongation(v, r);
     const bool jown = newton || j < nlocal;
-    manybody.add_elongation(i, j, elong, stiffness.half(i), stiffness.half(j), jown);
+    manybody.add_elongation(i, j, elong, stiffness.pair(i, j), jown);
     if (pressure) {
       eos.add_pair(i, j, p.d, v + C::DPREV, carried / v[C::REF], jown);
       v[C::DR] = moving ? C::motion(v, r) : 0.0;
@@ -168,10 +168,10 @@ void PairMCA::plastic_trial(const StatePass &pass)
     for (int b = 0; b < links.size(); b++) {
       const int i = links.i(b), j = links.j(b);
       double *v = links.values(b);
-      v[C::SIG] = normal_trial(i, j, v, links.pair(b).r);
+      const McaPairHalves halves = stiffness.pair(i, j);
+      v[C::SIG] = normal_trial(i, j, v, links.pair(b).r, halves);
       const double intact = types.model(atom->type[i], atom->type[j]).response.intact(v[C::KAPPA]);
-      stress.add_trial(i, j, links.pair(b), v, intact, stiffness.half(i), stiffness.half(j),
-                       newton || j < nlocal);
+      stress.add_trial(i, j, links.pair(b), v, intact, halves, newton || j < nlocal);
     }
     links.clear();
   };
@@ -184,8 +184,7 @@ void PairMCA::plastic_trial(const StatePass &pass)
     // this step's motion of the pair, for the trapezoid rule of the plastic work (with a shock
     // law the volume pass has taken it)
     if (!eos.active()) v[C::DR] = moving ? C::motion(v, sqrt(p.rsq)) : 0.0;
-    if (links.add(i, j, v, p, C::series(stiffness.half(i), stiffness.half(j)), omega[i], omega[j],
-                  dt, moving))
+    if (links.add(i, j, v, p, stiffness.pair(i, j).series(), omega[i], omega[j], dt, moving))
       trials();
   });
   trials();
@@ -237,9 +236,10 @@ void PairMCA::pair_forces(const StatePass &pass, StateTally &changes)
     }
     if (p.rsq == 0.0) coincident_elements(lmp, i, j);
     p.orient(ri, rj);
-    const double ai = stiffness.half(i), aj = stiffness.half(j), a = C::series(ai, aj);
+    const McaPairHalves halves = stiffness.pair(i, j);
+    const double a = halves.series();
     const bool jown = newton || j < nlocal;
-    const McaPairTally tally{changes, jown ? 1.0 : 0.5, volumes, i, j, ai, aj, jown, heat};
+    const McaPairTally tally{changes, jown ? 1.0 : 0.5, volumes, i, j, halves, jown, heat};
     // the turn of the pair's stored vectors; a link's, with plasticity, turned in the plastic pass
     const bool turned = linked && plastic;
     const C::Turn turn = moving && !turned ? p.turn(omega[i], omega[j], dt) : C::Turn();
@@ -249,7 +249,7 @@ void PairMCA::pair_forces(const StatePass &pass, StateTally &changes)
     McaPairForce out;
     if (linked) {
       McaLinkedPair link(model.response, v, a, domain->dimension == 2);
-      const double sigma = plastic ? v[C::SIG] : trial_stresses(i, j, v, p, turning);
+      const double sigma = plastic ? v[C::SIG] : trial_stresses(i, j, v, p, turning, halves);
       // with a shock law (and a volume) on either side the pair takes its elements' pressure;
       // on both, it returns its deviator about zero and has the hourglass spring; an element
       // of the shock law without a volume acts as one of the linear law (volumetric_strain)

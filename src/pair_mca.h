@@ -108,18 +108,17 @@ namespace ClusterDyn {
     void pair_forces(const StatePass &, StateTally &);
     // a linked pair's trial stresses: the tangential one slid (stored), the normal one returned
     double trial_stresses(int i, int j, double *v, const McaPairFrame &p,
-                          const McaContact::Turn *turn)
+                          const McaContact::Turn *turn, const McaPairHalves &halves)
     {
-      McaLinkedPair::slide(v, McaContact::series(stiffness.half(i), stiffness.half(j)), p, turn);
-      return normal_trial(i, j, v, p.r);
+      McaLinkedPair::slide(v, halves.series(), p, turn);
+      return normal_trial(i, j, v, p.r, halves);
     }
     // the effective normal stress before any return, with its many-body part (inline: as a
     // call per link it cost 4 % of the step)
-    double normal_trial(int i, int j, const double *v, double r) const
+    double normal_trial(int i, int j, const double *v, double r, const McaPairHalves &halves) const
     {
-      const double ai = stiffness.half(i), aj = stiffness.half(j);
-      return McaLinkedPair::elastic_stress(v, McaContact::series(ai, aj), r) +
-          (setting.manybody ? manybody.pair_stress(i, j, ai, aj) : 0.0);
+      return McaLinkedPair::elastic_stress(v, halves.series(), r) +
+          (setting.manybody ? manybody.pair_stress(i, j, halves) : 0.0);
     }
     bool elements_turn() const;
   };

@@ -149,7 +149,7 @@ struct Stepped {
   McaPairForce out;
   const McaPairFrame p = frame_along_x(1.05);
   const double omega[3] = {0.0, 0.0, 0.0};
-  explicit Stepped(double w) : tally{changes, w, nullptr, 0, 1, 1.0, 1.0, true, nullptr} {}
+  explicit Stepped(double w) : tally{changes, w, nullptr, 0, 1, McaPairHalves(1.0, 1.0), true, nullptr} {}
   bool step(double sigma, const McaPressureLoad *pressure)
   {
     McaLinkedPair law(response, link.v, a);

@@ -22,6 +22,19 @@ TEST(McaPairFrame, SeparationDirectionAndArms)
   EXPECT_EQ(p.n[2], 0.0);
   EXPECT_NEAR(p.qi, 1.0, 1e-15);    // 5 x 0.5 / 2.5: the contact point divides r as R_i : R_j
   EXPECT_NEAR(p.qj, 4.0, 1e-15);
+  EXPECT_DOUBLE_EQ(p.inverse, 0.2);    // 1 / r, which the direction and the turn take
+}
+
+// a direction of unit length from the reciprocal of r, to round-off, off the axes too
+TEST(McaPairFrame, DirectionIsUnitFromTheReciprocal)
+{
+  double xi[3] = {0.3, -1.7, 2.9}, xj[3] = {-2.2, 0.4, 1.3};
+  double *x[2] = {xi, xj};
+  McaPairFrame p(x, 0, 1);
+  p.orient(1.0, 1.0);
+  EXPECT_NEAR(p.r * p.inverse, 1.0, 1e-15);
+  EXPECT_NEAR(McaContact::dot(p.n, p.n), 1.0, 4e-16);
+  for (int k = 0; k < 3; k++) EXPECT_NEAR(p.n[k], p.d[k] / p.r, 1e-15);
 }
 
 // both elements spinning at Omega (a rigid rotation): the frame turns by Omega dt whatever the

@@ -70,7 +70,7 @@ TEST(McaUnlinkedPair, SlidingAtTheCapDissipatesMuSigmaPerDistance)
   double v[C::NVALUES] = {};
   int word = 0;
   StateTally changes;
-  const McaPairTally tally{changes, 1.0, nullptr, 0, 1, 2.0 * a, 2.0 * a, true, nullptr};
+  const McaPairTally tally{changes, 1.0, nullptr, 0, 1, McaPairHalves(2.0 * a, 2.0 * a), true, nullptr};
   McaPairForce out;
   const McaPairFrame p = frame(r, ri, rj);
   touch.step(model, word, 0, v, p, nullptr, a, nullptr, nullptr, 0.0, tally, true, out);
@@ -99,7 +99,7 @@ TEST(McaUnlinkedPair, WeldsPressedAtTheWeldStressIfTheTypesLink)
   McaPairModel model;
   model.friction = McaFriction{0.0, 0.0, 0.5};
   StateTally changes;
-  const McaPairTally tally{changes, 1.0, nullptr, 0, 1, 20.0, 20.0, true, nullptr};
+  const McaPairTally tally{changes, 1.0, nullptr, 0, 1, McaPairHalves(20.0, 20.0), true, nullptr};
   McaPairForce out;
   const McaPairFrame p = frame(r, ri, rj);
   const McaUnlinkedPair touch(ri, rj, ri + rj, a, r, 3);
@@ -170,7 +170,7 @@ TEST(McaUnlinkedPair, AContactLeftPressedTakesItsEnergyFromTheBreak)
   v[C::EPL] = 0.01;
   StateTally changes;
   changes.ejump = 1.0;    // what the link's own energy released
-  const McaPairTally tally{changes, 0.5, nullptr, 0, 1, 20.0, 20.0, false, nullptr};
+  const McaPairTally tally{changes, 0.5, nullptr, 0, 1, McaPairHalves(20.0, 20.0), false, nullptr};
   const McaPairFrame p = frame(0.975, ri, rj);
   const int word = McaUnlinkedPair::left_by_break(state_word(1, 0, 0), v, p, ri, rj, a, 3, tally);
   EXPECT_TRUE(word & WORD_KEPT);
@@ -180,7 +180,7 @@ TEST(McaUnlinkedPair, AContactLeftPressedTakesItsEnergyFromTheBreak)
   double w[C::NVALUES] = {};
   w[C::REF] = 0.97;
   StateTally apart;
-  const McaPairTally tally_apart{apart, 1.0, nullptr, 0, 1, 20.0, 20.0, true, nullptr};
+  const McaPairTally tally_apart{apart, 1.0, nullptr, 0, 1, McaPairHalves(20.0, 20.0), true, nullptr};
   McaUnlinkedPair::left_by_break(state_word(1, 0, 0), w, frame(0.975, ri, rj), ri, rj, a, 3,
                                  tally_apart);
   EXPECT_EQ(apart.ejump, 0.0);
