@@ -9,7 +9,8 @@
    displacement (stress per length), so that the two halves in series give
    sigma_ij = sigma_ji (Newton's third law): a = a_i a_j / (a_i + a_j), and
    element i takes the share w_i = a_j / (a_i + a_j) of the pair's
-   elongation.  Objectivity: between two evaluations the pair's frame turns
+   elongation (both from one division per pair: mca_pair_halves.h).
+   Objectivity: between two evaluations the pair's frame turns
    by the spin of its contact, w = (q_ij omega_i + q_ji omega_j) / r; the
    stored tangential stress and last separation are turned by w dt before
    the new separation is compared with them, so that a rigid rotation makes
@@ -63,8 +64,6 @@ namespace ClusterDyn {
     }
 
     static double half_stiffness(double shear, double radius) { return 2.0 * shear / radius; }
-
-    static double series(double ai, double aj) { return ai * aj / (ai + aj); }
 
     // the moment of a link (the review's K_ij) from the relative rotation rot of j against i:
     // a circular contact of area S bends with the stiffness a I and twists with a J

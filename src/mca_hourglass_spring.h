@@ -15,6 +15,7 @@
 #define LMP_CLUSTERDYN_MCA_HOURGLASS_SPRING_H
 
 #include "mca_contact.h"
+#include "mca_pair_halves.h"
 
 namespace LAMMPS_NS {
 namespace ClusterDyn {
@@ -27,7 +28,8 @@ namespace ClusterDyn {
     // pull at the step's start); returns the pull and sets the spring's energy
     static double pull(double *v, double bi, double bj, bool moving, double &energy)
     {
-      const double f = bi + bj > 0.0 ? v[C::AREA] * C::series(bi, bj) * v[C::HG] : 0.0;
+      const double f =
+          bi + bj > 0.0 ? v[C::AREA] * McaPairHalves(bi, bj).series() * v[C::HG] : 0.0;
       if (moving) v[C::EHG] += 0.5 * (v[C::FHG] + f) * v[C::DR];
       v[C::FHG] = f;
       energy = v[C::EHG];

@@ -269,7 +269,7 @@ void McaSegmentContact::compute(const NeighList *full, const double *stiffness, 
     const McaSegmentLaw sl = McaSegmentLaw::between(law[ai], law[aj], t);
     const double s = McaElement::unlinked_area(rk, rs, 2);
     const double a =
-        McaContact::series(stiffness[k], (1.0 - t) * stiffness[bi] + t * stiffness[bj]);
+        McaPairHalves(stiffness[k], (1.0 - t) * stiffness[bi] + t * stiffness[bj]).series();
     double enormal, espring = 0.0, work = 0.0;
     const double kn = 1.5 * s * a;
     const double fn = McaSegmentLaw::normal(kn, h0, h, enormal);

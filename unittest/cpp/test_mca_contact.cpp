@@ -60,22 +60,6 @@ void expect_vec(const Vec &got, const Vec &want, double tol)
 
 }    // namespace
 
-TEST(McaContact, HalvesInSeriesCarryOneStress)
-{
-  const double gi = 3.0, ri = 0.5, gj = 1.0, rj = 0.8;
-  const double ai = McaContact::half_stiffness(gi, ri), aj = McaContact::half_stiffness(gj, rj);
-  EXPECT_NEAR(ai, 12.0, 1e-14);
-  EXPECT_NEAR(aj, 2.5, 1e-14);
-  const double a = McaContact::series(ai, aj);
-  EXPECT_NEAR(1.0 / a, 1.0 / ai + 1.0 / aj, 1e-14);
-  EXPECT_NEAR(McaContact::series(aj, ai), a, 1e-15);
-  // an elongation e split as w_i = a_j/(a_i + a_j): both halves at the pair's stress a e
-  const double e = 0.01, ei = e * aj / (ai + aj), ej = e - ei;
-  EXPECT_NEAR(ai * ei, a * e, 1e-15);
-  EXPECT_NEAR(aj * ej, a * e, 1e-15);
-  EXPECT_NEAR(McaContact::series(4.0, 4.0), 2.0, 1e-15);
-}
-
 TEST(McaContact, TurnIsTheRotationByPhi)
 {
   // about z by 90 degrees: x -> y, y -> -x

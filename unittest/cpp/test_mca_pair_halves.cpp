@@ -5,9 +5,30 @@
 // evenly at half the stiffness.
 #include "mca_pair_halves.h"
 
+#include "mca_contact.h"
+
 #include "gtest/gtest.h"
 
+using LAMMPS_NS::ClusterDyn::McaContact;
 using LAMMPS_NS::ClusterDyn::McaPairHalves;
+
+// the elements' halves a = 2 G / R in series: 1/a = 1/a_i + 1/a_j, the same either way round;
+// an elongation e split by the shares loads both halves to the pair's stress a e
+TEST(McaPairHalves, HalvesInSeriesCarryOneStress)
+{
+  const double gi = 3.0, ri = 0.5, gj = 1.0, rj = 0.8;
+  const double ai = McaContact::half_stiffness(gi, ri), aj = McaContact::half_stiffness(gj, rj);
+  EXPECT_NEAR(ai, 12.0, 1e-14);
+  EXPECT_NEAR(aj, 2.5, 1e-14);
+  const McaPairHalves h(ai, aj);
+  const double a = h.series();
+  EXPECT_NEAR(1.0 / a, 1.0 / ai + 1.0 / aj, 1e-14);
+  EXPECT_NEAR(McaPairHalves(aj, ai).series(), a, 1e-15);
+  const double e = 0.01, ei = e * h.share_i(), ej = e * h.share_j();
+  EXPECT_NEAR(ei + ej, e, 1e-17);
+  EXPECT_NEAR(ai * ei, a * e, 1e-15);
+  EXPECT_NEAR(aj * ej, a * e, 1e-15);
+}
 
 TEST(McaPairHalves, SeriesAndSharesAgainstTheirClosedForms)
 {
