@@ -6,14 +6,17 @@
 # steps from the impact) NARROW and WIDE fcc cells across, alternating, ROUNDS rounds.  PAD > 0:
 # a second copy whose pair rows carry PAD unused doubles more (the bytes each pass streams per
 # pair grow, and the saved copies with them; no arithmetic in the passes changes), run in the same
-# rounds.  Each timed part includes its per-element work: the volume pass the elements' update
+# rounds.  Beside them, in the same rounds, LAMMPS's own pair_style granular on the same plate
+# with 3 and with 10 doubles of pair history (in.granular_plate; GRANULAR=0: not).  Each timed
+# part includes its per-element work: the volume pass the elements' update
 # and the exchange with the ghosts, the plastic pass the elements' returns.  Prints each run,
 # then per build and width the median of each part (us per element-step) and the wide plate's
 # over the narrow one's.  Needs git, cmake and ninja.
 #   bash bench/bench_mca_passes.sh [BUILD] [STEPS] [ROUNDS] [NARROW] [WIDE]
 #   (BUILD: a configured CMake build folder of the plugin, build/ by default, whose LAMMPS and
 #   SIMD setting the copies take; defaults 100 steps, 3 rounds, 5 and 50 cells; PAD=8 by
-#   default, PAD=0: the unpadded copy only)
+#   default, PAD=0: the unpadded copy only; GRANULAR=0: no granular runs, which need LAMMPS's
+#   GRANULAR package)
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 top=$(cd "$here/.." && pwd)
@@ -57,23 +60,37 @@ one() {  # build cells
           b, c, 1e6 * p / (n * s), f[4], f[6], f[8], f[2] + f[10]
       }'
 }
+granular() {  # history cells: the stock style's Pair time
+  (cd "$work" && LD_LIBRARY_PATH="$lammps_build" OMP_NUM_THREADS=1 "$lammps_build/lmp" \
+    -in "$here/in.granular_plate" -log none -nocite -var cells "$2" -var history "$1" 2>&1) |
+    awk -v b="granular-$1" -v c="$2" '/^Loop time of/ {n = $12; s = $9} $1 == "Pair" && $2 == "|" {p = $3}
+      END {
+        if (n == 0 || p == "") {printf "%s %d cells: the run failed\n", b, c; exit 1}
+        printf "%s %d cells: Pair %.4f\n", b, c, 1e6 * p / (n * s)
+      }'
+}
+[ "${GRANULAR:-1}" = 0 ] || builds_granular=(granular-3 granular-10)
 for _ in $(seq "$rounds"); do
   for b in "${builds[@]}"; do for c in "$narrow" "$wide"; do one "$b" "$c"; done; done
+  if [ "${GRANULAR:-1}" != 0 ]; then
+    for h in 3 10; do for c in "$narrow" "$wide"; do granular "$h" "$c"; done; done
+  fi
 done | tee "$work/runs.txt"
-echo "medians, us per element-step (Pair, then the passes), and the wide plate's over the narrow one's:"
-for b in "${builds[@]}"; do
+echo "medians, us per element-step (granular: per atom-step; Pair, then the passes), and the wide plate's over the narrow one's:"
+for b in "${builds[@]}" ${builds_granular[@]+"${builds_granular[@]}"}; do
   awk -v b="$b" -v nc="$narrow" -v wc="$wide" '
     function median(list,   a, n, i, j, t) {
       n = split(list, a, " ")
       for (i = 2; i <= n; i++) for (j = i; j > 1 && a[j - 1] + 0 > a[j] + 0; j--) {t = a[j]; a[j] = a[j - 1]; a[j - 1] = t}
       return n % 2 ? a[(n + 1) / 2] : 0.5 * (a[n / 2] + a[n / 2 + 1])
     }
-    $1 == b {for (k = 5; k <= 13; k += 2) v[$2, k] = v[$2, k] " " $k}
+    $1 == b {for (k = 5; k <= 13; k += 2) if ($k != "") v[$2, k] = v[$2, k] " " $k}
     END {
       split("Pair volume plastic forces prep+after", name, " ")
       for (k = 5; k <= 13; k += 2) {
+        if (v[nc, k] == "") continue
         m1 = median(v[nc, k]); m2 = median(v[wc, k])
-        printf "%-10s %-11s %3d cells %.4f  %3d cells %.4f  wide/narrow %.2f\n", b, name[(k - 3) / 2], nc, m1, wc, m2, m2 / m1
+        printf "%-11s %-11s %3d cells %.4f  %3d cells %.4f  wide/narrow %.2f\n", b, name[(k - 3) / 2], nc, m1, wc, m2, m2 / m1
       }
     }' "$work/runs.txt"
 done
