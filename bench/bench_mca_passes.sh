@@ -7,7 +7,12 @@
 # a second copy whose pair rows carry PAD unused doubles more (the bytes each pass streams per
 # pair grow, and the saved copies with them; no arithmetic in the passes changes), run in the same
 # rounds.  Beside them, in the same rounds, LAMMPS's own pair_style granular on the same plate
-# with 3 and with 10 doubles of pair history (in.granular_plate; GRANULAR=0: not).  Each timed
+# with 3 and with 10 doubles of pair history (in.granular_plate; GRANULAR=0: not), and
+# LAMMPS's smd/tlsph, two passes over each particle's partners with a stress between them, on
+# the plate of examples/mca-shock/in.tlsph (one body, the same number of steps, free sides; 8
+# particles across for 5 fcc cells, 'across' = 1.6 x cells rounded; TLSPH=0: not), with its
+# Pair time per partner-step and its mean partners per particle (fewer near free sides, so
+# more of them on a wider plate).  Each timed
 # part includes its per-element work: the volume pass the elements' update
 # and the exchange with the ghosts, the plastic pass the elements' returns.  Prints each run,
 # then per build and width the median of each part (us per element-step) and the wide plate's
@@ -16,7 +21,8 @@
 #   (BUILD: a configured CMake build folder of the plugin, build/ by default, whose LAMMPS and
 #   SIMD setting the copies take; defaults 100 steps, 3 rounds, 5 and 50 cells; PAD=8 by
 #   default, PAD=0: the unpadded copy only; GRANULAR=0: no granular runs, which need LAMMPS's
-#   GRANULAR package)
+#   GRANULAR package; TLSPH=0: no smd/tlsph runs, which need its MACHDYN package; a LAMMPS
+#   without either package skips its runs)
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 top=$(cd "$here/.." && pwd)
@@ -69,14 +75,43 @@ granular() {  # history cells: the stock style's Pair time
         printf "%s %d cells: Pair %.4f\n", b, c, 1e6 * p / (n * s)
       }'
 }
+# the plate of in.tlsph, STEPS steps; then its mean partners per particle (compute
+# smd/tlsph/num/neighs: partners not broken; none break here)
+{ sed -e "s/^variable     steps equal .*/variable     steps equal $steps/" "$top/examples/mca-shock/in.tlsph"
+  printf '%s\n' 'compute      partners all reduce ave c_nn' 'thermo_style custom step c_partners' 'run          0 post no'
+} > "$work/in.tlsph"
+grep -q "^variable     steps equal $steps\$" "$work/in.tlsph" ||
+  { echo "bench_mca_passes.sh: in.tlsph has no 'variable     steps equal' line" >&2; exit 1; }
+tlsph() {  # cells: smd/tlsph's Pair time on a plate as wide, per particle- and partner-step
+  (cd "$work" && LD_LIBRARY_PATH="$lammps_build" OMP_NUM_THREADS=1 "$lammps_build/lmp" \
+    -in in.tlsph -log none -nocite -var metal al -var v 400 -var records 0 -var bodies 1 \
+    -var across "$(((16 * $1 + 5) / 10))" 2>&1) |
+    awk -v c="$1" '/^Loop time of/ && $9 > 0 {n = $12; s = $9} $1 == "Pair" && $2 == "|" {p = $3}
+      $1 == "Step" && $2 == "c_partners" {getline; k = $2}
+      END {
+        if (n == 0 || p == "" || k == "") {printf "smd/tlsph %d cells: the run failed\n", c; exit 1}
+        printf "smd/tlsph %d cells: Pair %.4f per-partner %.5f partners=%.2f,particles=%d\n", c,
+          1e6 * p / (n * s), 1e6 * p / (n * s * k), k, n
+      }'
+}
+packages=$("$lammps_build/lmp" -h)    # read whole: a grep -q would cut lmp's output short
+has_package() { grep -qw "$1" <<< "$packages"; }
+if [ "${GRANULAR:-1}" != 0 ] && ! has_package GRANULAR; then
+  echo "bench_mca_passes.sh: this LAMMPS has no GRANULAR package: no pair_style granular runs" >&2; GRANULAR=0
+fi
+if [ "${TLSPH:-1}" != 0 ] && ! has_package MACHDYN; then
+  echo "bench_mca_passes.sh: this LAMMPS has no MACHDYN package: no smd/tlsph runs" >&2; TLSPH=0
+fi
 [ "${GRANULAR:-1}" = 0 ] || builds_granular=(granular-3 granular-10)
+[ "${TLSPH:-1}" = 0 ] || builds_granular+=(smd/tlsph)
 for _ in $(seq "$rounds"); do
   for b in "${builds[@]}"; do for c in "$narrow" "$wide"; do one "$b" "$c"; done; done
   if [ "${GRANULAR:-1}" != 0 ]; then
     for h in 3 10; do for c in "$narrow" "$wide"; do granular "$h" "$c"; done; done
   fi
+  if [ "${TLSPH:-1}" != 0 ]; then for c in "$narrow" "$wide"; do tlsph "$c"; done; fi
 done | tee "$work/runs.txt"
-echo "medians, us per element-step (granular: per atom-step; Pair, then the passes), and the wide plate's over the narrow one's:"
+echo "medians, us per element-step (granular, smd/tlsph: per atom-step, smd/tlsph also per partner-step; Pair, then the passes), and the wide plate's over the narrow one's:"
 for b in "${builds[@]}" ${builds_granular[@]+"${builds_granular[@]}"}; do
   awk -v b="$b" -v nc="$narrow" -v wc="$wide" '
     function median(list,   a, n, i, j, t) {
@@ -86,7 +121,7 @@ for b in "${builds[@]}" ${builds_granular[@]+"${builds_granular[@]}"}; do
     }
     $1 == b {for (k = 5; k <= 13; k += 2) if ($k != "") v[$2, k] = v[$2, k] " " $k}
     END {
-      split("Pair volume plastic forces prep+after", name, " ")
+      split(b == "smd/tlsph" ? "Pair per-partner" : "Pair volume plastic forces prep+after", name, " ")
       for (k = 5; k <= 13; k += 2) {
         if (v[nc, k] == "") continue
         m1 = median(v[nc, k]); m2 = median(v[wc, k])
